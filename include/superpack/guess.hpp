@@ -1,0 +1,25 @@
+// Plain floating-point scalars for *guesses* only (STYLE P6): the generic formulas can be
+// instantiated with double to find a starting box quickly; nothing computed here is ever
+// reported or used as a verdict, and every guess is re-verified in interval arithmetic.
+#pragma once
+#include <cmath>
+
+#include "superpack/jet.hpp"
+
+namespace superpack {
+
+// Newton's method in double from `start`; returns the last iterate (no claim attached).
+template <class F>
+double guess_root(const F& f, double start, int iterations = 40) {
+    double x = start;
+    for (int k = 0; k < iterations; ++k) {
+        const Jet<double> jet = f(variable(x));
+        if (jet.derivative == 0 || !std::isfinite(jet.value)) break;
+        const double next = x - jet.value / jet.derivative;
+        if (next == x) break;
+        x = next > 0 ? next : x / 2;
+    }
+    return x;
+}
+
+}  // namespace superpack
