@@ -1,0 +1,96 @@
+// superpack check-lattice --p P (--basis "a,b,c; d,e,f; g,h,i" | --family F) [--digits D] [--json]
+#include <memory>
+
+#include "common.hpp"
+#include "superpack/decimal.hpp"
+#include "superpack/lattice.hpp"
+
+namespace superpack::cli {
+
+namespace {
+
+struct CheckLatticeOptions {
+    std::string p, basis, family, digits;
+    bool json = false;
+};
+
+std::string triple_text(const Coefficients& c) {
+    return "(" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + ")";
+}
+
+template <class I>
+std::string enclosure_text(const I& x) {
+    const DecimalEnclosure text = to_decimal(x, 17);
+    return "[" + text.lo + ", " + text.hi + "]";
+}
+
+template <class I>
+void print_table(const LatticeCheck<I>& check, const std::optional<I>& phi) {
+    std::cout << "verdict      " << to_string(check.verdict) << "  (" << check.reason << ")\n";
+    if (check.min_norm) std::cout << "min norm     " << enclosure_text(*check.min_norm) << "\n";
+    std::cout << "contacts     " << check.contacts() << "\n";
+    for (const auto& c : check.contact_vectors) std::cout << "  contact    " << triple_text(c) << "\n";
+    for (const auto& x : check.near_contacts)
+        std::cout << "  near       " << triple_text(x.coefficients) << "  norm " << enclosure_text(x.norm) << "\n";
+    if (check.witness)
+        std::cout << "witness      " << triple_text(check.witness->coefficients) << "  norm "
+                  << enclosure_text(check.witness->norm) << "\n";
+    if (phi) std::cout << "phi          " << enclosure_text(*phi) << "\n";
+    std::cout << "enumerated   |a| <= " << check.coefficient_bound[0] << ", |b| <= " << check.coefficient_bound[1]
+              << ", |c| <= " << check.coefficient_bound[2] << "\n";
+}
+
+int run(const CheckLatticeOptions& options) {
+    if (options.basis.empty() == options.family.empty())
+        throw Failure(exit_usage, "check-lattice: give exactly one of --basis and --family");
+    const Rational p = parse_p(options.p);
+    return with_field(options.digits, [&](const auto& field, long digits) {
+        using I = typename std::decay_t<decltype(field)>::Interval;
+        LatticeCheck<I> check;
+        std::optional<I> phi;
+        Json document = header_json("check-lattice", field, digits);
+        document["p"] = options.p;
+        document["p_exact"] = rational_text(p);
+        if (!options.family.empty()) {
+            const Family family = parse_family(options.family);
+            const auto lattice = enclose_family(family, p, field);
+            check = check_family_lattice(lattice, field.rational(p));
+            phi = lattice.phi;
+            document["family"] = to_string(family);
+        } else {
+            const Basis<Rational> basis = parse_basis(options.basis);
+            check = check_exact_lattice(basis, p, field);
+            phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field)));
+            document["basis"] = options.basis;
+        }
+        if (options.json) {
+            document.update(lattice_check_json(check, false));
+            document["phi"] = phi ? enclosure_json(*phi) : Json(nullptr);
+            std::cout << document.dump(2) << "\n";
+        } else {
+            print_table(check, phi);
+        }
+        // Overlap with a witness is a certified answer, like a packing: exit 0 for both.
+        if (check.verdict == Verdict::undecided) throw Failure(exit_undecided, "check-lattice: undecided: " + check.reason);
+        return exit_ok;
+    });
+}
+
+}  // namespace
+
+void add_check_lattice(CLI::App& app) {
+    auto options = std::make_shared<CheckLatticeOptions>();
+    CLI::App* command = app.add_subcommand("check-lattice", "Certify that a lattice is a superball packing (or find an overlap)");
+    command->add_option("--p", options->p, "deformation parameter p >= 1/2: a decimal or a fraction")->required();
+    command->add_option("--basis", options->basis, "exact basis rows \"a,b,c; d,e,f; g,h,i\" (decimals or fractions)");
+    command->add_option("--family", options->family, "C0, C1, O0 or O1 (its certified enclosures)");
+    command->add_option("--digits", options->digits, "significant digits (Arb balls); default: binary64 intervals");
+    command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->callback([options] { run(*options); });
+}
+
+namespace {
+const SubcommandRegistration registration("check-lattice", add_check_lattice);
+}  // namespace
+
+}  // namespace superpack::cli
