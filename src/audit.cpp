@@ -41,11 +41,46 @@ Json basis_json(const Basis<DInterval>& basis) {
     return rows;
 }
 
+// O1 by continuation: the root of Eq. (12) is followed from p = 1/2 (Minkowski (1/6, 2/3), or
+// the second root (5/12, 1/6)) piece by piece; on each piece Krawczyk proves that a box around
+// the previous root holds exactly one root for every p of the piece. This avoids the full (q, s)
+// search of enclose_family_at, whose cost explodes on some pieces (NOTES.md 5.5).
+struct O1Tracker {
+    double q, s;
+};
+
+FamilyLattice<DInterval> track_o1(O1Tracker& tracker, const DInterval& p) {
+    FamilyLattice<DInterval> lattice{Family::O1};
+    const DoubleField field;
+    auto equations = [&](const auto& x) { return o1_equations(x, p); };
+    const double radius = 2 * width_upper(p) + 1e-9;
+    for (double r = radius; r < 0.05; r *= 4) {
+        const std::vector<DInterval> box{from_doubles(field.integer(0), std::max(0.0, tracker.q - r), tracker.q + r),
+                                         from_doubles(field.integer(0), tracker.s - r, tracker.s + r)};
+        const KrawczykResult<DInterval> proof = krawczyk_isolate(equations, box, 0.0, 60);
+        if (proof.status != RootStatus::unique || !contains(proof.initial_box[0], proof.box[0]) ||
+            !contains(proof.initial_box[1], proof.box[1]))
+            continue;
+        tracker = {mid_double(proof.box[0]), mid_double(proof.box[1])};
+        lattice.parameters = {{"l", o1_l(p)}, {"q", proof.box[0]}, {"s", proof.box[1]}};
+        lattice.search.push_back({proof.initial_box, RootStatus::unique, proof.box, proof.reason});
+        lattice.branches.push_back({{{"q", proof.box[0]}, {"s", proof.box[1]}}, lattice.search.back()});
+        lattice.basis = o1_basis(proof.box[0], proof.box[1], p);
+        lattice.status = FamilyStatus::certified;
+        lattice.message = "root of Eq. (12) followed by continuation from p = 1/2; Krawczyk: unique in the box";
+        return lattice;
+    }
+    lattice.message = "Krawczyk could not follow the root of Eq. (12) onto this piece";
+    return lattice;
+}
+
 // One piece, without subdivision.
-AuditPiece audit_piece(Family family, AuditBranch branch, const Rational& lo, const Rational& hi) {
+AuditPiece audit_piece(Family family, AuditBranch branch, const Rational& lo, const Rational& hi,
+                       O1Tracker* tracker = nullptr) {
     AuditPiece piece{lo, hi};
     const DInterval p = piece_interval(lo, hi);
-    const FamilyLattice<DInterval> lattice = enclose_family_at(family, p);
+    if (tracker != nullptr) branch = AuditBranch::published;  // the tracked root is the lattice
+    const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_o1(*tracker, p) : enclose_family_at(family, p);
     piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
     piece.detail["family_status"] = lattice.status == FamilyStatus::certified ? "certified"
                                     : lattice.status == FamilyStatus::no_lattice ? "no_lattice"
@@ -123,6 +158,13 @@ AuditRange claimed_audit_range(Family family) {
     return {};
 }
 
+AuditSettings default_audit_settings(Family family) {
+    // O1's root search (two unknowns) costs grow fast with the width of p: keep pieces ~7e-4 and do not
+    // bisect (an undecided piece still gets the certified midpoint check).
+    if (family == Family::O1) return {300, 3};
+    return {16, 12};
+}
+
 AuditResult audit_family(Family family, const AuditRange& range, const AuditSettings& settings, AuditBranch branch,
                          const AuditProgress& progress) {
     if (branch == AuditBranch::o1_second_root && family != Family::O1)
@@ -135,9 +177,23 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     ends.push_back(range.hi);
     std::sort(ends.begin(), ends.end());
     const Rational total = range.hi - range.lo;
+    std::optional<O1Tracker> tracker;
+    if (family == Family::O1) {
+        if (branch == AuditBranch::published) tracker = O1Tracker{1.0 / 6, 2.0 / 3};
+        else tracker = O1Tracker{5.0 / 12, 1.0 / 6};
+        if (range.lo != Rational(1, 2)) {
+            // Start the continuation from the complete root search at the exact left end.
+            const FamilyLattice<DInterval> start = enclose_family_at(family, piece_interval(range.lo, range.lo));
+            const std::size_t index = branch == AuditBranch::published ? 0 : start.branches.size() - 1;
+            if (start.branches.empty()) throw std::runtime_error("no root of Eq. (12) at the start of the range");
+            tracker = O1Tracker{mid_double(start.branches[index].unknowns[0].value),
+                                mid_double(start.branches[index].unknowns[1].value)};
+        }
+    }
     std::function<void(const Rational&, const Rational&, int)> audit = [&](const Rational& lo, const Rational& hi,
                                                                            int depth) {
-        AuditPiece piece = audit_piece(family, branch, lo, hi);
+        AuditPiece piece = audit_piece(family, branch, lo, hi, tracker ? &*tracker : nullptr);
+        piece.detail["lattice"] = branch == AuditBranch::published ? "published" : "second root of Eq. (12)";
         const bool settled = piece.outcome == "packing" || piece.outcome == "overlapping" || piece.outcome == "no_lattice";
         if (!settled && depth < settings.max_depth) {
             Rational middle = (lo + hi) / 2;
@@ -146,7 +202,20 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
             audit(middle, hi, depth + 1);
             return;
         }
-        if (!settled) piece.reason += " (subdivision floor reached)";
+        if (!settled) {
+            piece.reason += " (subdivision floor reached)";
+            // A refutation at one exact p of the piece is still certified: try the midpoint.
+            Rational middle = (lo + hi) / 2;
+            middle.canonicalize();
+            O1Tracker copy = tracker ? *tracker : O1Tracker{};
+            const AuditPiece point = audit_piece(family, branch, middle, middle, tracker ? &copy : nullptr);
+            piece.detail["midpoint_check"] = point.detail;
+            if (point.outcome == "overlapping") {
+                piece.outcome = "overlapping_at_point";
+                piece.witness = point.witness;
+                piece.reason += "; at p = " + rational_text(middle) + " the lattice overlaps (witness in midpoint_check)";
+            }
+        }
         if (progress)
             progress(std::string(to_string(family)) + " p in [" + decimal_or_fraction_text(lo) + ", " +
                      decimal_or_fraction_text(hi) + "]: " + piece.outcome);

@@ -218,11 +218,9 @@ bool exact_norm_is_two(const std::array<Rational, 3>& v, const Rational& p) {
     return power(a / 2, m.get_si()) * power(Rational(k), n.get_si()) == 1;
 }
 
-}  // namespace
 
 template <class Field>
-LatticeCheck<typename Field::Interval> check_exact_lattice(const Basis<Rational>& basis, const Rational& p,
-                                                           const Field& field) {
+LatticeCheck<typename Field::Interval> check_exact(const Basis<Rational>& basis, const Rational& p, const Field& field) {
     using I = typename Field::Interval;
     if (p < Rational(1, 2)) throw InputError("check-lattice needs p >= 1/2 (the superball must be convex)");
     return check_lattice(enclose_basis(basis, field), field.rational(p), [&](const Coefficients& c) {
@@ -230,6 +228,16 @@ LatticeCheck<typename Field::Interval> check_exact_lattice(const Basis<Rational>
         for (int j = 0; j < 3; ++j) v[j] = c[0] * basis[0][j] + c[1] * basis[1][j] + c[2] * basis[2][j];
         return exact_norm_is_two(v, p);
     });
+}
+
+}  // namespace
+
+LatticeCheck<DInterval> check_exact_lattice(const Basis<Rational>& basis, const Rational& p, const DoubleField& field) {
+    return check_exact(basis, p, field);
+}
+
+LatticeCheck<Ball> check_exact_lattice(const Basis<Rational>& basis, const Rational& p, const BallField& field) {
+    return check_exact(basis, p, field);
 }
 
 Json coefficients_json(const Coefficients& c) { return Json::array({c[0], c[1], c[2]}); }
@@ -271,8 +279,6 @@ template LatticeCheck<DInterval> check_lattice(const Basis<DInterval>&, const DI
 template LatticeCheck<Ball> check_lattice(const Basis<Ball>&, const Ball&, const ContactProof&);
 template LatticeCheck<DInterval> check_family_lattice(const FamilyLattice<DInterval>&, const DInterval&);
 template LatticeCheck<Ball> check_family_lattice(const FamilyLattice<Ball>&, const Ball&);
-template LatticeCheck<DInterval> check_exact_lattice(const Basis<Rational>&, const Rational&, const DoubleField&);
-template LatticeCheck<Ball> check_exact_lattice(const Basis<Rational>&, const Rational&, const BallField&);
 template Json lattice_check_json(const LatticeCheck<DInterval>&, bool);
 template Json lattice_check_json(const LatticeCheck<Ball>&, bool);
 

@@ -15,7 +15,9 @@ struct AuditPiece {
     Rational lo, hi;  // the piece [lo, hi] of p, exactly
     Verdict verdict = Verdict::undecided;
     std::string reason;
-    std::string outcome = "undecided";  // packing | overlapping | no_lattice | undecided
+    // packing | overlapping (every p of the piece) | overlapping_at_point (at the piece's midpoint,
+    // the piece itself undecided) | no_lattice | undecided
+    std::string outcome = "undecided";
     std::size_t contacts = 0;
     std::optional<Coefficients> witness;
     Json detail;      // parameter boxes, basis, coefficient bound, vectors and norm enclosures
@@ -39,6 +41,8 @@ struct AuditSettings {
     int initial_pieces = 16;
     int max_depth = 12;  // a piece is bisected at most this often when undecided
 };
+
+AuditSettings default_audit_settings(Family family);
 
 struct AuditResult {
     Family family;

@@ -79,9 +79,8 @@ Basis<typename Field::Interval> enclose_basis(const Basis<Rational>& basis, cons
 // by rational arithmetic when 2p is an integer, and for vectors whose nonzero coordinates share
 // one absolute value a (k of them) by the exact test k (a/2)^(2p) = 1 with 2p = m/n, i.e.
 // (a/2)^m = k^(-n). Every other candidate whose enclosure holds 2 is a near contact.
-template <class Field>
-LatticeCheck<typename Field::Interval> check_exact_lattice(const Basis<Rational>& basis, const Rational& p,
-                                                           const Field& field);
+LatticeCheck<DInterval> check_exact_lattice(const Basis<Rational>& basis, const Rational& p, const DoubleField& field);
+LatticeCheck<Ball> check_exact_lattice(const Basis<Rational>& basis, const Rational& p, const BallField& field);
 
 template <class I>
 Json lattice_check_json(const LatticeCheck<I>& check, bool with_evaluated);

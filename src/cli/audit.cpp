@@ -14,7 +14,7 @@ namespace {
 struct AuditOptions {
     std::string family, p_range, output_directory = "proofs";
     bool second_root = false, json = false;
-    int pieces = 16, depth = 12;
+    int pieces = 0, depth = -1;  // 0 / -1: the family's default
 };
 
 AuditRange parse_range(const std::string& text, const AuditRange& claimed) {
@@ -37,12 +37,14 @@ int run(const AuditOptions& options) {
     std::vector<Family> families = options.family.empty() ? all_families() : std::vector{parse_family(options.family)};
     if (options.second_root && (families.size() != 1 || families[0] != Family::O1))
         throw Failure(exit_usage, "--second-root needs --family O1");
-    const AuditSettings settings{options.pieces, options.depth};
     Json document = header_json("audit", DoubleField{}, 15);
     Json audits = Json::array();
     for (Family family : families) {
         AuditRange range = parse_range(options.p_range, claimed_audit_range(family));
         if (options.second_root && options.p_range.empty()) range = {Rational(1, 2), Rational(2), range.breaks, "[1/2, 2]"};
+        AuditSettings settings = default_audit_settings(family);
+        if (options.pieces > 0) settings.initial_pieces = options.pieces;
+        if (options.depth >= 0) settings.max_depth = options.depth;
         const auto start = std::chrono::steady_clock::now();
         const AuditResult result = audit_family(family, range, settings,
                                                 options.second_root ? AuditBranch::o1_second_root : AuditBranch::published,
@@ -66,7 +68,7 @@ int run(const AuditOptions& options) {
                 if (piece.witness)
                     std::cout << ", witness (" << (*piece.witness)[0] << ", " << (*piece.witness)[1] << ", "
                               << (*piece.witness)[2] << ")";
-                if (piece.outcome == "undecided") std::cout << ": " << piece.reason;
+                if (piece.outcome == "undecided" || piece.outcome == "overlapping_at_point") std::cout << ": " << piece.reason;
                 std::cout << "\n";
             }
         }
@@ -87,8 +89,8 @@ void add_audit(CLI::App& app) {
     command->add_option("--family", options->family, "C0, C1, O0 or O1 (default: all four)");
     command->add_option("--p-range", options->p_range, "a:b exact (default: the claimed range)");
     command->add_flag("--second-root", options->second_root, "O1: audit the lattice of the other real root of Eq. (12)");
-    command->add_option("--pieces", options->pieces, "initial pieces per range (default 16)");
-    command->add_option("--depth", options->depth, "bisections of an undecided piece (default 12)");
+    command->add_option("--pieces", options->pieces, "initial pieces per range (default 16; O1: 300)");
+    command->add_option("--depth", options->depth, "bisections of an undecided piece (default 12; O1: 3)");
     command->add_option("--output-directory", options->output_directory, "where audit-<family>.json goes (default proofs)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
