@@ -50,7 +50,8 @@ struct O1Tracker {
 };
 
 FamilyLattice<DInterval> track_o1(O1Tracker& tracker, const DInterval& p) {
-    FamilyLattice<DInterval> lattice{Family::O1};
+    FamilyLattice<DInterval> lattice;
+    lattice.family = Family::O1;
     const DoubleField field;
     auto equations = [&](const auto& x) { return o1_equations(x, p); };
     const double radius = 2 * width_upper(p) + 1e-9;
@@ -75,47 +76,18 @@ FamilyLattice<DInterval> track_o1(O1Tracker& tracker, const DInterval& p) {
 }
 
 // One piece, without subdivision.
-AuditPiece audit_piece(Family family, AuditBranch branch, const Rational& lo, const Rational& hi,
+AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
                        O1Tracker* tracker = nullptr) {
     AuditPiece piece{lo, hi};
     const DInterval p = piece_interval(lo, hi);
-    if (tracker != nullptr) branch = AuditBranch::published;  // the tracked root is the lattice
     const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_o1(*tracker, p) : enclose_family_at(family, p);
     piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
     piece.detail["family_status"] = lattice.status == FamilyStatus::certified ? "certified"
                                     : lattice.status == FamilyStatus::no_lattice ? "no_lattice"
                                                                                  : "undecided";
     if (!lattice.message.empty()) piece.detail["family_message"] = lattice.message;
-    std::optional<Basis<DInterval>> basis = lattice.basis;
-    Json parameters = parameters_json(lattice);
-    if (branch == AuditBranch::o1_second_root) {
-        // Every root of Eq. (12) with q >= 0 is among lattice.branches when no leaf of the search
-        // is undecided; they are sorted by decreasing s, the second root has the smaller s.
-        const bool complete = std::none_of(lattice.search.begin(), lattice.search.end(),
-                                           [](const auto& leaf) { return leaf.status == RootStatus::undecided; });
-        piece.detail["roots_with_q_nonnegative"] = lattice.branches.size();
-        piece.detail["root_search_complete"] = complete;
-        basis.reset();
-        parameters = Json::object();
-        const DInterval crossover = log(DoubleField{}.integer(3)) / log(DoubleField{}.integer(4));
-        const RootBranch<DInterval>* second = nullptr;
-        if (complete && lattice.branches.size() == 2 && certainly_less(p, crossover)) second = &lattice.branches[1];
-        if (complete && lattice.branches.size() == 1 && certainly_less(crossover, p)) second = &lattice.branches[0];
-        if (complete && lattice.branches.empty()) {
-            piece.outcome = "no_lattice";
-            piece.reason = "Eq. (12) has no real root with q >= 0 on this piece (complete search)";
-            return piece;
-        }
-        if (second == nullptr) {
-            piece.reason = complete ? "root count of Eq. (12) does not identify the second root here"
-                                    : "the root search of Eq. (12) has undecided leaves";
-            return piece;
-        }
-        const DInterval& q = second->unknowns[0].value;
-        const DInterval& s = second->unknowns[1].value;
-        parameters = Json{{"q", enclosure_json(q)}, {"s", enclosure_json(s)}, {"l", enclosure_json(o1_l(p))}};
-        basis = o1_basis(q, s, p);
-    }
+    const std::optional<Basis<DInterval>> basis = lattice.basis;
+    const Json parameters = parameters_json(lattice);
     piece.detail["parameters"] = parameters;
     if (!basis) {
         piece.outcome = lattice.status == FamilyStatus::no_lattice ? "no_lattice" : "undecided";
@@ -192,7 +164,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     }
     std::function<void(const Rational&, const Rational&, int)> audit = [&](const Rational& lo, const Rational& hi,
                                                                            int depth) {
-        AuditPiece piece = audit_piece(family, branch, lo, hi, tracker ? &*tracker : nullptr);
+        AuditPiece piece = audit_piece(family, lo, hi, tracker ? &*tracker : nullptr);
         piece.detail["lattice"] = branch == AuditBranch::published ? "published" : "second root of Eq. (12)";
         const bool settled = piece.outcome == "packing" || piece.outcome == "overlapping" || piece.outcome == "no_lattice";
         if (!settled && depth < settings.max_depth) {
@@ -208,7 +180,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
             Rational middle = (lo + hi) / 2;
             middle.canonicalize();
             O1Tracker copy = tracker ? *tracker : O1Tracker{};
-            const AuditPiece point = audit_piece(family, branch, middle, middle, tracker ? &copy : nullptr);
+            const AuditPiece point = audit_piece(family, middle, middle, tracker ? &copy : nullptr);
             piece.detail["midpoint_check"] = point.detail;
             if (point.outcome == "overlapping") {
                 piece.outcome = "overlapping_at_point";

@@ -63,8 +63,11 @@ TEST_CASE("O1 second root of Eq. (12) at p in [0.9, 0.901]: exists past p*_o, an
     const AuditResult result = audit_family(Family::O1, {parse_rational("0.9"), parse_rational("0.901"), {}, "test"}, {1, 0},
                                             AuditBranch::o1_second_root);
     REQUIRE(result.pieces.size() == 1);
-    CHECK(result.pieces[0].detail["roots_with_q_nonnegative"] == 1);
     CHECK(result.pieces[0].outcome == "overlapping");
+    // The complete root search at p = 0.9 agrees: exactly one root with q >= 0 (the paper says none).
+    const auto lattice = enclose_family(Family::O1, parse_rational("0.9"), DoubleField{});
+    CHECK(lattice.status == FamilyStatus::no_lattice);
+    CHECK(lattice.branches.size() == 1);
 }
 
 TEST_CASE("merged verdict ranges keep every piece") {
