@@ -78,7 +78,9 @@ FamilyLattice<DInterval> track_o1(O1Tracker& tracker, const DInterval& p) {
 // One piece, without subdivision.
 AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
                        O1Tracker* tracker = nullptr) {
-    AuditPiece piece{lo, hi};
+    AuditPiece piece;
+    piece.lo = lo;
+    piece.hi = hi;
     const DInterval p = piece_interval(lo, hi);
     const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_o1(*tracker, p) : enclose_family_at(family, p);
     piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
