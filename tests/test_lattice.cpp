@@ -1,6 +1,9 @@
 // The lattice checker against hand-made lattices of known answer and independent mpmath values
 // (scripts/make_lattice_data.py -> tests/data/lattice.json).
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 
@@ -164,4 +167,18 @@ TEST_CASE("singular and malformed bases are input errors") {
     CHECK_THROWS_AS(parse_basis("1,0; 0,1,0; 0,0,1"), InputError);
     CHECK_THROWS_AS(parse_basis("1,x,0; 0,1,0; 0,0,1"), InputError);
     CHECK_THROWS_AS(check_exact_lattice(parse_basis(minkowski), parse_rational("0.4"), DoubleField{}), InputError);
+}
+
+TEST_CASE("check-lattice exit codes: overlap is a certified answer (0), bad input 2, undecided 4") {
+    auto exit_code = [](const std::string& arguments) {
+        const int status = std::system((std::string(SUPERPACK_BINARY) + " check-lattice " + arguments + " >/dev/null 2>&1").c_str());
+        return WEXITSTATUS(status);
+    };
+    CHECK(exit_code("--p 0.5 --basis \"" + minkowski + "\"") == 0);
+    CHECK(exit_code("--p 2 --basis \"3.9,2,0; -2,-2,0; 0,0,2\"") == 0);
+    CHECK(exit_code("--p 2 --basis \"1,0,0; 0,1,0; 1,1,0\"") == 2);
+    CHECK(exit_code("--p 2 --basis \"1,0,0; 0,1\"") == 2);
+    CHECK(exit_code("--p 2 --family C0 --basis \"1,0,0; 0,1,0; 0,0,1\"") == 2);
+    CHECK(exit_code("--p 1 --basis \"2.000000000000000000000000000001,0,0; 0,2,0; 0,0,2\"") == 4);
+    CHECK(exit_code("--p 1 --basis \"2.000000000000000000000000000001,0,0; 0,2,0; 0,0,2\" --digits 60") == 0);
 }
