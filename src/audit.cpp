@@ -144,7 +144,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     if (branch == AuditBranch::o1_second_root && family != Family::O1)
         throw InputError("the second root branch exists for O1 only");
     if (!(range.lo < range.hi)) throw InputError("empty p range");
-    AuditResult result{family, branch, range};
+    AuditResult result{family, branch, range, {}};
     std::vector<Rational> ends{range.lo};
     for (const Rational& b : range.breaks)
         if (b > range.lo && b < range.hi) ends.push_back(b);
@@ -219,7 +219,7 @@ std::vector<AuditPiece> merge_verdict_ranges(const std::vector<AuditPiece>& piec
                 continue;
             }
         }
-        AuditPiece summary{piece.lo, piece.hi, piece.verdict, piece.reason, piece.outcome, piece.contacts, piece.witness};
+        AuditPiece summary{piece.lo, piece.hi, piece.verdict, piece.reason, piece.outcome, piece.contacts, piece.witness, Json()};
         merged.push_back(summary);
     }
     return merged;
