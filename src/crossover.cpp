@@ -1,0 +1,472 @@
+#include "superpack/crossover.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace superpack {
+
+namespace {
+
+// phi = V(p) / |det B| for an interval or a Jet (the sign of det is read from its value).
+template <class T>
+std::optional<T> density_of(const T& p, const Basis<T>& basis) {
+    const T det = determinant(basis);
+    if (certainly_positive(value_of(det))) return enclose_ball_volume(p, 3) / det;
+    if (certainly_negative(value_of(det))) return enclose_ball_volume(p, 3) / (-det);
+    return std::nullopt;
+}
+
+template <class I>
+I interval_from(const I& like, double lo, double hi) {
+    return from_doubles(like, lo, hi);
+}
+
+}  // namespace
+
+template <class I>
+DensitySlope<I> enclose_density_slope(Family family, const I& p) {
+    DensitySlope<I> result;
+    result.family = family;
+    const Jet<I> p_jet = variable(p);
+    if (family == Family::O1) throw InputError("enclose_density_slope: O1 is not supported (fold at p*_o)");
+    if (family == Family::O0) {
+        result.parameters = {{"c", octahedral_height(p)}};
+        const auto phi = density_of(p_jet, o0_basis(p_jet));
+        if (!phi) {
+            result.message = "the sign of det B is not decided";
+            return result;
+        }
+        result.phi = phi->value;
+        result.slope = phi->derivative;
+        result.status = FamilyStatus::certified;
+        return result;
+    }
+    // C0, C1: s(p) is certified (smallest positive root) for every p of the interval.
+    const FamilyLattice<I> lattice = enclose_family_at(family, p);
+    if (lattice.status != FamilyStatus::certified) {
+        result.message = lattice.message;
+        return result;
+    }
+    const I& s = lattice.parameters.front().value;
+    const I f_s = cubic_equation(family, variable(s), constant(p)).derivative;
+    const I f_p = cubic_equation(family, constant(s), p_jet).derivative;
+    if (contains_zero(f_s)) {
+        result.message = "f_s may vanish: the implicit function theorem does not apply";
+        return result;
+    }
+    const I ds = -f_p / f_s;
+    const auto phi = density_of(p_jet, cubic_basis(family, Jet<I>{s, ds}, p_jet));
+    if (!phi) {
+        result.message = "the sign of det B is not decided";
+        return result;
+    }
+    result.parameters = lattice.parameters;
+    result.parameter_slope = ds;
+    result.phi = *lattice.phi;
+    result.slope = phi->derivative;
+    result.status = FamilyStatus::certified;
+    return result;
+}
+
+const char* to_string(Agreement agreement) {
+    switch (agreement) {
+        case Agreement::agree: return "agree";
+        case Agreement::disagree: return "disagree";
+        case Agreement::undecided: return "undecided";
+    }
+    return "undecided";
+}
+
+const char* to_string(PieceClaim claim) {
+    switch (claim) {
+        case PieceClaim::negative: return "negative";
+        case PieceClaim::positive: return "positive";
+        case PieceClaim::root: return "root";
+        case PieceClaim::undecided: return "undecided";
+    }
+    return "undecided";
+}
+
+namespace {
+
+// agree: x lies strictly inside (lo, hi); disagree: x lies strictly outside [lo, hi].
+template <class I>
+Agreement classify(const I& x, const I& lo, const I& hi) {
+    if (certainly_less(lo, x) && certainly_less(x, hi)) return Agreement::agree;
+    if (certainly_less(x, lo) || certainly_less(hi, x)) return Agreement::disagree;
+    return Agreement::undecided;
+}
+
+}  // namespace
+
+template <class I>
+PrintedCheck<I> check_printed(const I& x, const std::string& printed) {
+    const auto field = field_of(x);
+    const Rational value = parse_rational(printed);
+    const std::size_t point = printed.find('.');
+    Rational unit(1);
+    if (point != std::string::npos)
+        for (std::size_t k = point + 1; k < printed.size(); ++k) unit /= 10;
+    const bool negative = !printed.empty() && printed[0] == '-';
+    PrintedCheck<I> result{printed};
+    const Rational truncated_lo = negative ? Rational(value - unit) : value;
+    const Rational truncated_hi = negative ? value : Rational(value + unit);
+    result.truncated = classify(x, field.rational(truncated_lo), field.rational(truncated_hi));
+    const Rational half = unit / 2;
+    result.rounded = classify(x, field.rational(value - half), field.rational(value + half));
+    return result;
+}
+
+template <class I>
+Agreement check_overlap(const I& x, const I& claim) {
+    I meet = x;
+    return intersect(meet, x, claim) ? Agreement::agree : Agreement::disagree;
+}
+
+// ---- the cubic crossover -------------------------------------------------------------
+
+namespace {
+
+struct EvaluationFailed : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// g = phi_C1 - phi_C0 and g' over a p interval.
+template <class I>
+Jet<I> difference_jet(const I& p) {
+    const DensitySlope<I> c0 = enclose_density_slope(Family::C0, p);
+    const DensitySlope<I> c1 = enclose_density_slope(Family::C1, p);
+    if (c0.status != FamilyStatus::certified) throw EvaluationFailed("C0: " + c0.message);
+    if (c1.status != FamilyStatus::certified) throw EvaluationFailed("C1: " + c1.message);
+    return {*c1.phi - *c0.phi, *c1.slope - *c0.slope};
+}
+
+template <class I>
+I difference_at(const I& p) {
+    const FamilyLattice<I> c0 = enclose_family_at(Family::C0, p);
+    const FamilyLattice<I> c1 = enclose_family_at(Family::C1, p);
+    if (!c0.phi || !c1.phi) throw EvaluationFailed("a cubic family is not certified at a point");
+    return *c1.phi - *c0.phi;
+}
+
+// The crossover equation as newton_isolate wants it: a value at a point, a Jet on a box.
+struct CrossoverEquation {
+    template <class I>
+    I operator()(const I& p) const {
+        return difference_at(p);
+    }
+    template <class I>
+    Jet<I> operator()(const Jet<I>& p) const {
+        return difference_jet(p.value);
+    }
+};
+
+int sign_of(PieceClaim claim) {
+    return claim == PieceClaim::negative ? -1 : claim == PieceClaim::positive ? 1 : 0;
+}
+
+// Newton at the field's precision on a piece; true when it proves a unique root there.
+template <class I>
+bool refine_root(const I& like, double lo, double hi, long digits, CubicCrossover<I>& result) {
+    const I box = interval_from(like, lo, hi);
+    const double target = digits > 17 ? std::pow(10.0, -static_cast<double>(digits)) / 4 : 0.0;
+    try {
+        NewtonResult<I> newton = newton_isolate(CrossoverEquation{}, box, target, 400);
+        if (newton.status != RootStatus::unique || !contains(newton.initial_box, newton.box)) return false;
+        result.newton = newton;
+        return true;
+    } catch (const EvaluationFailed&) {
+        return false;
+    }
+}
+
+}  // namespace
+
+template <class Field>
+CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Field& field, long digits) {
+    using I = typename Field::Interval;
+    CubicCrossover<I> result;
+    const DInterval like(0.0);
+    const double left_end = 1.0, right_end = 10.0, first_width = 1.0 / 16;
+    const double min_width = 1e-9;
+    const std::size_t max_pieces = 20000;
+    std::vector<std::pair<double, double>> pending;
+    for (double hi = right_end; hi > left_end; hi -= first_width) pending.push_back({hi - first_width, hi});
+    std::size_t root_pieces = 0;
+    while (!pending.empty()) {
+        const auto [a, b] = pending.back();
+        pending.pop_back();
+        const DInterval p = interval_from(like, a, b);
+        SignPiece piece{p};
+        auto split = [&](const std::string& why) {
+            if (b - a < min_width || result.pieces.size() + pending.size() + 2 > max_pieces) {
+                piece.reason = why + "; subdivision budget reached";
+                result.pieces.push_back(piece);
+                return;
+            }
+            const double middle = a + (b - a) / 2;
+            pending.push_back({middle, b});
+            pending.push_back({a, middle});
+        };
+        Jet<DInterval> g;
+        try {
+            g = difference_jet(p);
+        } catch (const EvaluationFailed& failure) {
+            split(failure.what());
+            continue;
+        }
+        piece.derivative = g.derivative;
+        if (a == left_end) {
+            // g(1) = 0 exactly (NOTES.md: both lattices are FCC), so g(p) = g'(xi) (p - 1).
+            piece.difference = g.derivative * (p - DInterval(left_end));
+            if (certainly_negative(g.derivative) || certainly_positive(g.derivative)) {
+                piece.claim = certainly_negative(g.derivative) ? PieceClaim::negative : PieceClaim::positive;
+                piece.reason = "g(1) = 0 exactly and g' has one sign on the piece (mean value theorem)";
+                result.pieces.push_back(piece);
+            } else {
+                split("g' not of one sign on a piece starting at p = 1");
+            }
+            continue;
+        }
+        // Mean value form g(m) + g'(P)(P - m), met with the direct enclosure.
+        const DInterval middle = midpoint(p);
+        DInterval value = g.value;
+        try {
+            const DInterval centered = difference_at(middle) + g.derivative * (p - middle);
+            if (!intersect(value, centered, g.value)) value = centered;
+        } catch (const EvaluationFailed&) {
+        }
+        piece.difference = value;
+        if (certainly_negative(value) || certainly_positive(value)) {
+            piece.claim = certainly_negative(value) ? PieceClaim::negative : PieceClaim::positive;
+            piece.reason = "g excludes 0 on the piece (mean value form)";
+            result.pieces.push_back(piece);
+            continue;
+        }
+        if (!contains_zero(g.derivative) && refine_root(field.integer(0), a, b, digits, result)) {
+            piece.claim = PieceClaim::root;
+            piece.reason = "interval Newton: exactly one zero of g in the piece (g' excludes 0)";
+            result.pieces.push_back(piece);
+            ++root_pieces;
+            continue;
+        }
+        split("neither g nor g' decided");
+    }
+
+    std::size_t undecided = 0, root_index = result.pieces.size();
+    for (std::size_t k = 0; k < result.pieces.size(); ++k) {
+        if (result.pieces[k].claim == PieceClaim::undecided) ++undecided;
+        if (result.pieces[k].claim == PieceClaim::root) root_index = k;
+    }
+    if (undecided > 0) {
+        result.message = std::to_string(undecided) + " pieces of [1, 10] undecided";
+        return result;
+    }
+    if (root_pieces != 1) {
+        result.message = std::to_string(root_pieces) + " pieces with a certified zero of g (expected 1)";
+        return result;
+    }
+    // On the root piece g' has one sign, so g changes sign at the root: -sign(g') to its
+    // left and sign(g') to its right. Every other piece must carry the matching sign.
+    const int rise = certainly_positive(*result.pieces[root_index].derivative) ? 1 : -1;
+    bool consistent = true;
+    for (std::size_t k = 0; k < result.pieces.size(); ++k) {
+        if (k == root_index) continue;
+        consistent = consistent && sign_of(result.pieces[k].claim) == (k < root_index ? -rise : rise);
+    }
+    if (!consistent) {
+        result.message = "g has more than one sign change on [1, 10]";
+        return result;
+    }
+    result.sign_left = -rise;
+    result.sign_right = rise;
+    result.p = result.newton->box;
+    const FamilyLattice<I> c0 = enclose_family_at(Family::C0, *result.p);
+    const FamilyLattice<I> c1 = enclose_family_at(Family::C1, *result.p);
+    if (!c0.phi || !c1.phi) {
+        result.message = "the densities at p*_c are not certified";
+        return result;
+    }
+    result.phi_c0 = *c0.phi;
+    result.phi_c1 = *c1.phi;
+    I phi = *c0.phi;
+    if (!intersect(phi, *c0.phi, *c1.phi)) {
+        result.message = "phi_C0 and phi_C1 at p*_c do not overlap";
+        return result;
+    }
+    result.phi = phi;
+    result.c0_at_1 = enclose_density_slope(Family::C0, field.integer(1));
+    result.c1_at_1 = enclose_density_slope(Family::C1, field.integer(1));
+    result.certified = true;
+    return result;
+}
+
+CubicCrossover<DInterval> certify_cubic_crossover(const DoubleField& field, long digits) {
+    return certify_cubic_crossover_impl(field, digits);
+}
+CubicCrossover<Ball> certify_cubic_crossover(const BallField& field, long digits) {
+    return certify_cubic_crossover_impl(field, digits);
+}
+
+// ---- the octahedral crossover ------------------------------------------------------
+
+namespace {
+
+// Eq. (6): 2 c(p) - 1, c the O0 height.
+template <class T>
+T octahedral_equation(const T& p) {
+    return constant_like(p, 2) * octahedral_height(p) - constant_like(p, 1);
+}
+
+// Sign of Eq. (6) on [a, b] by direct evaluation, bisecting until decided.
+void octahedral_signs(double a, double b, std::vector<SignPiece>& pieces) {
+    const DInterval p = interval_from(DInterval(0.0), a, b);
+    SignPiece piece{p};
+    const Jet<DInterval> value = octahedral_equation(variable(p));
+    piece.difference = value.value;
+    piece.derivative = value.derivative;
+    if (certainly_negative(value.value) || certainly_positive(value.value)) {
+        piece.claim = certainly_negative(value.value) ? PieceClaim::negative : PieceClaim::positive;
+        piece.reason = "Eq. (6) excludes 0 on the piece";
+        pieces.push_back(piece);
+        return;
+    }
+    if (b - a < 1e-9) {
+        piece.reason = "Eq. (6) not decided; subdivision budget reached";
+        pieces.push_back(piece);
+        return;
+    }
+    const double middle = a + (b - a) / 2;
+    octahedral_signs(a, middle, pieces);
+    octahedral_signs(middle, b, pieces);
+}
+
+}  // namespace
+
+template <class Field>
+OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover(const Field& field, long digits) {
+    using I = typename Field::Interval;
+    // The root piece [25/32, 13/16] holds ln3/ln4 = 0.79248...; below 9/16 the sign comes
+    // from the lemma Eq. (6) <=> 4^p = 3 (NOTES.md), where Eq. (6) itself nears 0^(1/(2p)).
+    const double lemma_end = 9.0 / 16, root_lo = 25.0 / 32, root_hi = 13.0 / 16;
+    const double target = digits > 17 ? std::pow(10.0, -static_cast<double>(digits)) / 4 : 0.0;
+    OctahedralCrossover<I> result;
+    result.newton = newton_isolate([](const auto& p) { return octahedral_equation(p); },
+                                   interval_from(field.integer(0), root_lo, root_hi), target, 400);
+    result.ln3_over_ln4 = log(field.integer(3)) / log(field.integer(4));
+    const NewtonResult<I>& newton = *result.newton;
+    {
+        const DInterval p = interval_from(DInterval(0.0), 0.5, lemma_end);
+        SignPiece piece{p};
+        piece.difference = exp(p * log(DInterval(4.0))) - DInterval(3.0);
+        const bool negative = certainly_negative(*piece.difference);
+        piece.claim = negative ? PieceClaim::negative : PieceClaim::undecided;
+        piece.reason = "sign of Eq. (6) = sign of 4^p - 3 for p > 1/2 (NOTES.md); 'difference' encloses 4^p - 3";
+        result.pieces.push_back(piece);
+    }
+    octahedral_signs(lemma_end, root_lo, result.pieces);
+    {
+        SignPiece piece{interval_from(DInterval(0.0), root_lo, root_hi), PieceClaim::undecided};
+        const bool unique = newton.status == RootStatus::unique && contains(newton.initial_box, newton.box);
+        piece.derivative = octahedral_equation(variable(piece.p)).derivative;
+        piece.claim = unique ? PieceClaim::root : PieceClaim::undecided;
+        piece.reason = "interval Newton on Eq. (6) (at the working precision): " + newton.reason;
+        result.pieces.push_back(piece);
+    }
+    octahedral_signs(root_hi, 1.0, result.pieces);
+    result.closed_form = check_overlap(newton.box, *result.ln3_over_ln4);
+    std::size_t roots = 0, wrong = 0;
+    for (const SignPiece& piece : result.pieces) {
+        if (piece.claim == PieceClaim::root) ++roots;
+        const bool left = piece.p.upper() <= root_lo;
+        if (piece.claim == PieceClaim::undecided) ++wrong;
+        else if (piece.claim != PieceClaim::root && sign_of(piece.claim) != (left ? -1 : 1)) ++wrong;
+    }
+    if (roots != 1 || wrong != 0 || result.closed_form != Agreement::agree) {
+        result.message = "the root of Eq. (6) on (1/2, 1] is not certified unique, or misses ln3/ln4";
+        return result;
+    }
+    I p = newton.box;
+    intersect(p, newton.box, *result.ln3_over_ln4);
+    result.p = p;
+    result.o0 = enclose_family_at(Family::O0, p);
+    const I zero = field.integer(0), one = field.integer(1);
+    result.o1_residuals = o1_equations(std::vector<I>{zero, one}, p);
+    result.o1_basis_at_root = o1_basis(zero, one, p);
+    result.o1_determinant = determinant(*result.o1_basis_at_root);
+    result.o1_phi = enclose_ball_volume(p, 3) / abs(*result.o1_determinant);
+    // B_O0 = U B_O1 with U = [[2,-1,-1],[0,1,0],[1,0,-1]] (det U = -1) at p*_o.
+    const long unimodular[3][3] = {{2, -1, -1}, {0, 1, 0}, {1, 0, -1}};
+    bool same = result.o0.basis.has_value();
+    for (int i = 0; i < 3 && same; ++i)
+        for (int k = 0; k < 3; ++k) {
+            I entry = zero;
+            for (int j = 0; j < 3; ++j) entry = entry + field.integer(unimodular[i][j]) * (*result.o1_basis_at_root)[j][k];
+            same = same && check_overlap(entry, (*result.o0.basis)[i][k]) == Agreement::agree;
+        }
+    result.same_lattice = same;
+    bool residuals_vanish = true;
+    for (const I& residual : result.o1_residuals) residuals_vanish = residuals_vanish && contains_zero(residual);
+    if (!result.o0.phi) {
+        result.message = "O0 is not certified at p*_o";
+        return result;
+    }
+    result.densities_meet = check_overlap(*result.o0.phi, *result.o1_phi);
+    I phi = *result.o0.phi;
+    intersect(phi, *result.o0.phi, *result.o1_phi);
+    result.phi = phi;
+    result.certified = residuals_vanish && same && result.densities_meet == Agreement::agree;
+    if (!result.certified) result.message = "O1 at (q, s) = (0, 1) does not match O0 at p*_o";
+    return result;
+}
+
+// ---- the slopes at the sphere point --------------------------------------------------
+
+template <class Field>
+SphereSlopes<typename Field::Interval> certify_sphere_slopes(const Field& field) {
+    using I = typename Field::Interval;
+    const I one = field.integer(1);
+    SphereSlopes<I> result{enclose_density_slope(Family::C0, one), enclose_density_slope(Family::C1, one),
+                           enclose_density_slope(Family::O0, one)};
+    if (result.o0.slope) result.a_minus = *result.o0.slope;
+    if (result.c0.slope && result.c1.slope) {
+        if (certainly_less(*result.c1.slope, *result.c0.slope)) {
+            result.a_plus = *result.c0.slope;
+            result.a_plus_family = "C0";
+        } else if (certainly_less(*result.c0.slope, *result.c1.slope)) {
+            result.a_plus = *result.c1.slope;
+            result.a_plus_family = "C1";
+        }
+    }
+    // The paper's closed forms: -(pi/(12 sqrt 2)) [A + 4 psi(1/2) + 2 psi(3/2) - 6 psi(5/2)],
+    // A = ln 64 + 8 for a_-, A = 24 + ln 8 for a_+.
+    const I factor = -field.pi() / (field.integer(12) * sqrt(field.integer(2)));
+    const I digammas = field.integer(4) * digamma(field.rational(Rational(1, 2))) +
+                       field.integer(2) * digamma(field.rational(Rational(3, 2))) -
+                       field.integer(6) * digamma(field.rational(Rational(5, 2)));
+    result.closed_minus = factor * (log(field.integer(64)) + field.integer(8) + digammas);
+    result.closed_plus = factor * (field.integer(24) + log(field.integer(8)) + digammas);
+    if (result.a_minus) {
+        result.minus_vs_closed = check_overlap(*result.a_minus, *result.closed_minus);
+        result.minus_printed = check_printed(*result.a_minus, "-0.02941");
+    }
+    if (result.a_plus) {
+        result.plus_vs_closed = check_overlap(*result.a_plus, *result.closed_plus);
+        result.plus_printed = check_printed(*result.a_plus, "0.3555");
+    }
+    result.closed_plus_printed = check_printed(*result.closed_plus, "0.3555");
+    return result;
+}
+
+template DensitySlope<DInterval> enclose_density_slope(Family, const DInterval&);
+template DensitySlope<Ball> enclose_density_slope(Family, const Ball&);
+template PrintedCheck<DInterval> check_printed(const DInterval&, const std::string&);
+template PrintedCheck<Ball> check_printed(const Ball&, const std::string&);
+template Agreement check_overlap(const DInterval&, const DInterval&);
+template Agreement check_overlap(const Ball&, const Ball&);
+template OctahedralCrossover<DInterval> certify_octahedral_crossover(const DoubleField&, long);
+template OctahedralCrossover<Ball> certify_octahedral_crossover(const BallField&, long);
+template SphereSlopes<DInterval> certify_sphere_slopes(const DoubleField&);
+template SphereSlopes<Ball> certify_sphere_slopes(const BallField&);
+
+}  // namespace superpack
