@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "superpack/guess.hpp"
+
 namespace superpack {
 
 namespace {
@@ -47,7 +49,16 @@ DensitySlope<I> enclose_density_slope(Family family, const I& p) {
         result.message = lattice.message;
         return result;
     }
-    const I& s = lattice.parameters.front().value;
+    result = cubic_density_slope(family, p, lattice.parameters.front().value);
+    if (result.status == FamilyStatus::certified) result.phi = *lattice.phi;
+    return result;
+}
+
+template <class I>
+DensitySlope<I> cubic_density_slope(Family family, const I& p, const I& s) {
+    DensitySlope<I> result;
+    result.family = family;
+    const Jet<I> p_jet = variable(p);
     const I f_s = cubic_equation(family, variable(s), constant(p)).derivative;
     const I f_p = cubic_equation(family, constant(s), p_jet).derivative;
     if (contains_zero(f_s)) {
@@ -60,12 +71,39 @@ DensitySlope<I> enclose_density_slope(Family family, const I& p) {
         result.message = "the sign of det B is not decided";
         return result;
     }
-    result.parameters = lattice.parameters;
+    result.parameters = {{"s", s}};
     result.parameter_slope = ds;
-    result.phi = *lattice.phi;
+    result.phi = phi->value;
     result.slope = phi->derivative;
     result.status = FamilyStatus::certified;
     return result;
+}
+
+template <class I>
+std::optional<PieceRoot<I>> certify_piece_root(Family family, const I& piece) {
+    const FamilyLattice<I> lattice = enclose_family_at(family, piece);
+    if (lattice.status != FamilyStatus::certified || lattice.branches.empty()) return std::nullopt;
+    return PieceRoot<I>{family, piece, lattice.branches.front().proof.piece.front(), lattice.parameters.front().value};
+}
+
+template <class I>
+std::optional<I> smallest_root_within(const PieceRoot<I>& known, const I& p) {
+    if (!contains(known.piece, p)) return std::nullopt;
+    if (contains(p, known.piece)) return known.root;
+    auto equation = [&](const auto& s) { return cubic_equation(known.family, s, p); };
+    // A narrow box around a guess first: a unique root there, inside root_box, is the one
+    // root of root_box, hence s(p). Otherwise Newton on all of root_box.
+    const double guess = guess_root([&](const auto& s) { return cubic_equation(known.family, s, mid_double(p)); },
+                                    mid_double(known.root));
+    const double radius = 1e-10 + 4 * width_upper(p);
+    if (std::isfinite(guess) && contains(known.root_box, from_doubles(p, guess - radius, guess + radius))) {
+        const I narrow = from_doubles(p, guess - radius, guess + radius);
+        const NewtonResult<I> newton = newton_isolate(equation, narrow, 0.0, 200);
+        if (newton.status == RootStatus::unique) return newton.box;
+    }
+    const NewtonResult<I> newton = newton_isolate(equation, known.root_box, 0.0, 200);
+    if (newton.status != RootStatus::unique) return std::nullopt;
+    return newton.box;
 }
 
 const char* to_string(Agreement agreement) {
@@ -131,34 +169,38 @@ struct EvaluationFailed : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// g = phi_C1 - phi_C0 and g' over a p interval.
+// g = phi_C1 - phi_C0 and g' for every p of an interval inside a certified piece.
 template <class I>
-Jet<I> difference_jet(const I& p) {
-    const DensitySlope<I> c0 = enclose_density_slope(Family::C0, p);
-    const DensitySlope<I> c1 = enclose_density_slope(Family::C1, p);
+Jet<I> difference_jet(const PieceRoot<I>& c0_root, const PieceRoot<I>& c1_root, const I& p) {
+    const auto s0 = smallest_root_within(c0_root, p);
+    const auto s1 = smallest_root_within(c1_root, p);
+    if (!s0 || !s1) throw EvaluationFailed("s not refined inside its certified piece");
+    const DensitySlope<I> c0 = cubic_density_slope(Family::C0, p, *s0);
+    const DensitySlope<I> c1 = cubic_density_slope(Family::C1, p, *s1);
     if (c0.status != FamilyStatus::certified) throw EvaluationFailed("C0: " + c0.message);
     if (c1.status != FamilyStatus::certified) throw EvaluationFailed("C1: " + c1.message);
     return {*c1.phi - *c0.phi, *c1.slope - *c0.slope};
 }
 
+// g alone at a point or interval inside a certified piece (no derivative).
 template <class I>
-I difference_at(const I& p) {
-    const FamilyLattice<I> c0 = enclose_family_at(Family::C0, p);
-    const FamilyLattice<I> c1 = enclose_family_at(Family::C1, p);
-    if (!c0.phi || !c1.phi) throw EvaluationFailed("a cubic family is not certified at a point");
-    return *c1.phi - *c0.phi;
+I difference_value(const PieceRoot<I>& c0_root, const PieceRoot<I>& c1_root, const I& p) {
+    const auto s0 = smallest_root_within(c0_root, p);
+    const auto s1 = smallest_root_within(c1_root, p);
+    if (!s0 || !s1) throw EvaluationFailed("s not refined inside its certified piece");
+    const auto phi0 = density_of(p, cubic_basis(Family::C0, *s0, p));
+    const auto phi1 = density_of(p, cubic_basis(Family::C1, *s1, p));
+    if (!phi0 || !phi1) throw EvaluationFailed("the sign of det B is not decided");
+    return *phi1 - *phi0;
 }
 
-// The crossover equation as newton_isolate wants it: a value at a point, a Jet on a box.
+// The crossover equation as newton_isolate wants it (a value at a point, a Jet on a box),
+// for p inside a piece where both roots s are certified once.
+template <class I>
 struct CrossoverEquation {
-    template <class I>
-    I operator()(const I& p) const {
-        return difference_at(p);
-    }
-    template <class I>
-    Jet<I> operator()(const Jet<I>& p) const {
-        return difference_jet(p.value);
-    }
+    PieceRoot<I> c0_root, c1_root;
+    I operator()(const I& p) const { return difference_value(c0_root, c1_root, p); }
+    Jet<I> operator()(const Jet<I>& p) const { return difference_jet(c0_root, c1_root, p.value); }
 };
 
 int sign_of(PieceClaim claim) {
@@ -170,8 +212,11 @@ template <class I>
 bool refine_root(const I& like, double lo, double hi, long digits, CubicCrossover<I>& result) {
     const I box = interval_from(like, lo, hi);
     const double target = digits > 17 ? std::pow(10.0, -static_cast<double>(digits)) / 4 : 0.0;
+    const auto c0_root = certify_piece_root(Family::C0, box);
+    const auto c1_root = certify_piece_root(Family::C1, box);
+    if (!c0_root || !c1_root) return false;
     try {
-        NewtonResult<I> newton = newton_isolate(CrossoverEquation{}, box, target, 400);
+        NewtonResult<I> newton = newton_isolate(CrossoverEquation<I>{*c0_root, *c1_root}, box, target, 400);
         if (newton.status != RootStatus::unique || !contains(newton.initial_box, newton.box)) return false;
         result.newton = newton;
         return true;
@@ -182,71 +227,106 @@ bool refine_root(const I& like, double lo, double hi, long digits, CubicCrossove
 
 }  // namespace
 
+// The partition is proved with 64-bit Arb balls: faster than binary64 intervals here, and
+// the pieces have exact double endpoints, so they are reported as binary64 intervals.
+DInterval outward_double(const Ball& x) {
+    mpfr_t lo, hi;
+    mpfr_init2(lo, 53);
+    mpfr_init2(hi, 53);
+    get_bounds(lo, hi, x);
+    const DInterval result = from_doubles(DInterval(0.0), mpfr_get_d(lo, MPFR_RNDD), mpfr_get_d(hi, MPFR_RNDU));
+    mpfr_clear(lo);
+    mpfr_clear(hi);
+    return result;
+}
+
 template <class Field>
 CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Field& field, long digits) {
     using I = typename Field::Interval;
     CubicCrossover<I> result;
-    const DInterval like(0.0);
-    const double left_end = 1.0, right_end = 10.0, first_width = 1.0 / 16;
+    const BallField partition_field{64};
+    const Ball like = partition_field.integer(0);
+    // 75 first pieces of width 0.12: enclose_family_at certifies s over pieces narrower than 1/8.
+    const double left_end = 1.0, right_end = 10.0;
+    const int first_pieces = 75;
     const double min_width = 1e-9;
     const std::size_t max_pieces = 20000;
     std::vector<std::pair<double, double>> pending;
-    for (double hi = right_end; hi > left_end; hi -= first_width) pending.push_back({hi - first_width, hi});
+    std::vector<double> ends;
+    for (int k = 0; k < first_pieces; ++k) ends.push_back(left_end + (right_end - left_end) * k / first_pieces);
+    ends.push_back(right_end);
+    for (std::size_t k = ends.size() - 1; k > 0; --k) pending.push_back({ends[k - 1], ends[k]});
     std::size_t root_pieces = 0;
+    // The sign of g at the left end of the next piece (pieces are proved left to right):
+    // g(1) = 0 exactly (NOTES.md: both lattices are FCC); after a piece, the sign it proved
+    // at its right end. Unknown after an undecided piece.
+    bool left_known = true;
+    int left_sign = 0;
     while (!pending.empty()) {
         const auto [a, b] = pending.back();
         pending.pop_back();
-        const DInterval p = interval_from(like, a, b);
-        SignPiece piece{p};
+        const Ball p = interval_from(like, a, b);
+        SignPiece piece{interval_from(DInterval(0.0), a, b)};
+        auto record = [&](PieceClaim claim, const std::string& reason, int right_sign) {
+            piece.claim = claim;
+            piece.reason = reason;
+            result.pieces.push_back(piece);
+            left_known = claim != PieceClaim::undecided;
+            left_sign = right_sign;
+        };
         auto split = [&](const std::string& why) {
             if (b - a < min_width || result.pieces.size() + pending.size() + 2 > max_pieces) {
-                piece.reason = why + "; subdivision budget reached";
-                result.pieces.push_back(piece);
+                record(PieceClaim::undecided, why + "; subdivision budget reached", 0);
                 return;
             }
             const double middle = a + (b - a) / 2;
             pending.push_back({middle, b});
             pending.push_back({a, middle});
         };
-        Jet<DInterval> g;
+        const auto c0_root = certify_piece_root(Family::C0, p);
+        const auto c1_root = certify_piece_root(Family::C1, p);
+        if (!c0_root || !c1_root) {
+            split("s not certified over the piece");
+            continue;
+        }
+        Jet<Ball> g{like, like};
         try {
-            g = difference_jet(p);
+            g = difference_jet(*c0_root, *c1_root, p);
         } catch (const EvaluationFailed& failure) {
             split(failure.what());
             continue;
         }
-        piece.derivative = g.derivative;
-        if (a == left_end) {
-            // g(1) = 0 exactly (NOTES.md: both lattices are FCC), so g(p) = g'(xi) (p - 1).
-            piece.difference = g.derivative * (p - DInterval(left_end));
-            if (certainly_negative(g.derivative) || certainly_positive(g.derivative)) {
-                piece.claim = certainly_negative(g.derivative) ? PieceClaim::negative : PieceClaim::positive;
-                piece.reason = "g(1) = 0 exactly and g' has one sign on the piece (mean value theorem)";
-                result.pieces.push_back(piece);
-            } else {
-                split("g' not of one sign on a piece starting at p = 1");
-            }
+        piece.derivative = outward_double(g.derivative);
+        // Monotone from a known end: g(a) <= 0 and g' < 0 give g < 0 on (a, b]; likewise > 0.
+        if (left_known && certainly_negative(g.derivative) && left_sign <= 0) {
+            piece.difference = outward_double(g.value);
+            record(PieceClaim::negative, "g(a) <= 0 (the piece to the left, or g(1) = 0) and g' < 0 on the piece", -1);
             continue;
         }
-        // Mean value form g(m) + g'(P)(P - m), met with the direct enclosure.
-        const DInterval middle = midpoint(p);
-        DInterval value = g.value;
-        try {
-            const DInterval centered = difference_at(middle) + g.derivative * (p - middle);
+        if (left_known && certainly_positive(g.derivative) && left_sign >= 0) {
+            piece.difference = outward_double(g.value);
+            record(PieceClaim::positive, "g(a) >= 0 (the piece to the left, or g(1) = 0) and g' > 0 on the piece", 1);
+            continue;
+        }
+        // The direct enclosure, and if it does not decide, the mean value form
+        // g(m) + g'(P)(P - m) met with it.
+        Ball value = g.value;
+        if (contains_zero(value) && a != left_end) try {
+            const Ball middle = midpoint(p);
+            const Ball centered = difference_value(*c0_root, *c1_root, middle) + g.derivative * (p - middle);
             if (!intersect(value, centered, g.value)) value = centered;
         } catch (const EvaluationFailed&) {
         }
-        piece.difference = value;
-        if (certainly_negative(value) || certainly_positive(value)) {
-            piece.claim = certainly_negative(value) ? PieceClaim::negative : PieceClaim::positive;
-            piece.reason = "g excludes 0 on the piece (mean value form)";
-            result.pieces.push_back(piece);
+        piece.difference = outward_double(value);
+        if (a != left_end && (certainly_negative(value) || certainly_positive(value))) {
+            const int sign = certainly_negative(value) ? -1 : 1;
+            record(sign < 0 ? PieceClaim::negative : PieceClaim::positive, "g excludes 0 on the piece (mean value form)",
+                   sign);
             continue;
         }
-        if (!contains_zero(g.derivative) && refine_root(field.integer(0), a, b, digits, result)) {
-            piece.claim = PieceClaim::root;
-            piece.reason = "interval Newton: exactly one zero of g in the piece (g' excludes 0)";
-            result.pieces.push_back(piece);
+        if (a != left_end && !contains_zero(g.derivative) && refine_root(field.integer(0), a, b, digits, result)) {
+            record(PieceClaim::root, "interval Newton: exactly one zero of g in the piece (g' excludes 0)",
+                   certainly_positive(g.derivative) ? 1 : -1);
             ++root_pieces;
             continue;
         }
@@ -344,7 +424,7 @@ void octahedral_signs(double a, double b, std::vector<SignPiece>& pieces) {
 }  // namespace
 
 template <class Field>
-OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover(const Field& field, long digits) {
+OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover_impl(const Field& field, long digits) {
     using I = typename Field::Interval;
     // The root piece [25/32, 13/16] holds ln3/ln4 = 0.79248...; below 9/16 the sign comes
     // from the lemma Eq. (6) <=> 4^p = 3 (NOTES.md), where Eq. (6) itself nears 0^(1/(2p)).
@@ -423,7 +503,7 @@ OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover(const
 // ---- the slopes at the sphere point --------------------------------------------------
 
 template <class Field>
-SphereSlopes<typename Field::Interval> certify_sphere_slopes(const Field& field) {
+SphereSlopes<typename Field::Interval> certify_sphere_slopes_impl(const Field& field) {
     using I = typename Field::Interval;
     const I one = field.integer(1);
     SphereSlopes<I> result{enclose_density_slope(Family::C0, one), enclose_density_slope(Family::C1, one),
@@ -460,13 +540,23 @@ SphereSlopes<typename Field::Interval> certify_sphere_slopes(const Field& field)
 
 template DensitySlope<DInterval> enclose_density_slope(Family, const DInterval&);
 template DensitySlope<Ball> enclose_density_slope(Family, const Ball&);
+template DensitySlope<DInterval> cubic_density_slope(Family, const DInterval&, const DInterval&);
+template DensitySlope<Ball> cubic_density_slope(Family, const Ball&, const Ball&);
+template std::optional<PieceRoot<DInterval>> certify_piece_root(Family, const DInterval&);
+template std::optional<PieceRoot<Ball>> certify_piece_root(Family, const Ball&);
+template std::optional<DInterval> smallest_root_within(const PieceRoot<DInterval>&, const DInterval&);
+template std::optional<Ball> smallest_root_within(const PieceRoot<Ball>&, const Ball&);
 template PrintedCheck<DInterval> check_printed(const DInterval&, const std::string&);
 template PrintedCheck<Ball> check_printed(const Ball&, const std::string&);
 template Agreement check_overlap(const DInterval&, const DInterval&);
 template Agreement check_overlap(const Ball&, const Ball&);
-template OctahedralCrossover<DInterval> certify_octahedral_crossover(const DoubleField&, long);
-template OctahedralCrossover<Ball> certify_octahedral_crossover(const BallField&, long);
-template SphereSlopes<DInterval> certify_sphere_slopes(const DoubleField&);
-template SphereSlopes<Ball> certify_sphere_slopes(const BallField&);
+OctahedralCrossover<DInterval> certify_octahedral_crossover(const DoubleField& field, long digits) {
+    return certify_octahedral_crossover_impl(field, digits);
+}
+OctahedralCrossover<Ball> certify_octahedral_crossover(const BallField& field, long digits) {
+    return certify_octahedral_crossover_impl(field, digits);
+}
+SphereSlopes<DInterval> certify_sphere_slopes(const DoubleField& field) { return certify_sphere_slopes_impl(field); }
+SphereSlopes<Ball> certify_sphere_slopes(const BallField& field) { return certify_sphere_slopes_impl(field); }
 
 }  // namespace superpack

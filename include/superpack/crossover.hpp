@@ -28,6 +28,25 @@ struct DensitySlope {
 
 template <class I>
 DensitySlope<I> enclose_density_slope(Family family, const I& p);
+// The same for C0 or C1 from an enclosure s of s(p) for every p of the interval.
+template <class I>
+DensitySlope<I> cubic_density_slope(Family family, const I& p, const I& s);
+
+// A cubic family certified once over a p piece: for every p in `piece` the smallest
+// positive root s(p) is the only root in `root_box` (the Newton box of enclose_family_at,
+// whose lower part [0, root_box) is proved root-free). For p inside the piece, s(p) is
+// then refined by Newton in root_box alone, without redoing the root-free search.
+template <class I>
+struct PieceRoot {
+    Family family;
+    I piece;
+    I root_box;
+    I root;  // s(p) for every p of the piece
+};
+template <class I>
+std::optional<PieceRoot<I>> certify_piece_root(Family family, const I& piece);
+template <class I>
+std::optional<I> smallest_root_within(const PieceRoot<I>& known, const I& p);
 
 // Three-valued comparison of a certified enclosure with a claimed value.
 enum class Agreement { agree, disagree, undecided };
@@ -99,8 +118,8 @@ struct OctahedralCrossover {
     std::optional<I> phi;  // phi*_o
 };
 
-template <class Field>
-OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover(const Field& field, long digits);
+OctahedralCrossover<DInterval> certify_octahedral_crossover(const DoubleField& field, long digits);
+OctahedralCrossover<Ball> certify_octahedral_crossover(const BallField& field, long digits);
 
 // The one-sided slopes of the maximal density at p = 1 and the paper's closed forms.
 template <class I>
@@ -113,7 +132,7 @@ struct SphereSlopes {
     PrintedCheck<I> minus_printed, plus_printed, closed_plus_printed;
 };
 
-template <class Field>
-SphereSlopes<typename Field::Interval> certify_sphere_slopes(const Field& field);
+SphereSlopes<DInterval> certify_sphere_slopes(const DoubleField& field);
+SphereSlopes<Ball> certify_sphere_slopes(const BallField& field);
 
 }  // namespace superpack
