@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "superpack/guess.hpp"
 
@@ -9,13 +10,31 @@ namespace superpack {
 
 namespace {
 
-// phi = V(p) / |det B| for an interval or a Jet (the sign of det is read from its value).
+// |det B| for an interval or a Jet (the sign of det is read from its value).
+template <class T>
+std::optional<T> abs_determinant(const Basis<T>& basis) {
+    const T det = determinant(basis);
+    if (certainly_positive(value_of(det))) return det;
+    if (certainly_negative(value_of(det))) return -det;
+    return std::nullopt;
+}
+
+// phi = V(p) / |det B|.
 template <class T>
 std::optional<T> density_of(const T& p, const Basis<T>& basis) {
-    const T det = determinant(basis);
-    if (certainly_positive(value_of(det))) return enclose_ball_volume(p, 3) / det;
-    if (certainly_negative(value_of(det))) return enclose_ball_volume(p, 3) / (-det);
-    return std::nullopt;
+    const auto det = abs_determinant(basis);
+    if (!det) return std::nullopt;
+    return enclose_ball_volume(p, 3) / *det;
+}
+
+// s(p) as a Jet: the enclosure s and ds/dp = -f_p / f_s (implicit function theorem), or
+// nothing when f_s may vanish.
+template <class I>
+std::optional<Jet<I>> root_jet(Family family, const I& p, const I& s) {
+    const I f_s = cubic_equation(family, variable(s), constant(p)).derivative;
+    const I f_p = cubic_equation(family, constant(s), variable(p)).derivative;
+    if (contains_zero(f_s)) return std::nullopt;
+    return Jet<I>{s, -f_p / f_s};
 }
 
 template <class I>
@@ -59,14 +78,13 @@ DensitySlope<I> cubic_density_slope(Family family, const I& p, const I& s) {
     DensitySlope<I> result;
     result.family = family;
     const Jet<I> p_jet = variable(p);
-    const I f_s = cubic_equation(family, variable(s), constant(p)).derivative;
-    const I f_p = cubic_equation(family, constant(s), p_jet).derivative;
-    if (contains_zero(f_s)) {
+    const auto s_jet = root_jet(family, p, s);
+    if (!s_jet) {
         result.message = "f_s may vanish: the implicit function theorem does not apply";
         return result;
     }
-    const I ds = -f_p / f_s;
-    const auto phi = density_of(p_jet, cubic_basis(family, Jet<I>{s, ds}, p_jet));
+    const I ds = s_jet->derivative;
+    const auto phi = density_of(p_jet, cubic_basis(family, *s_jet, p_jet));
     if (!phi) {
         result.message = "the sign of det B is not decided";
         return result;
@@ -83,7 +101,8 @@ template <class I>
 std::optional<PieceRoot<I>> certify_piece_root(Family family, const I& piece) {
     const FamilyLattice<I> lattice = enclose_family_at(family, piece);
     if (lattice.status != FamilyStatus::certified || lattice.branches.empty()) return std::nullopt;
-    return PieceRoot<I>{family, piece, lattice.branches.front().proof.piece.front(), lattice.parameters.front().value};
+    return PieceRoot<I>{family, piece, lattice.branches.front().proof.piece.front(), lattice.parameters.front().value,
+                        *lattice.phi};
 }
 
 template <class I>
@@ -169,29 +188,40 @@ struct EvaluationFailed : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// g = phi_C1 - phi_C0 and g' for every p of an interval inside a certified piece.
-template <class I>
-Jet<I> difference_jet(const PieceRoot<I>& c0_root, const PieceRoot<I>& c1_root, const I& p) {
+// g = phi_C1 - phi_C0 = V (1/|det B_C1| - 1/|det B_C0|) for every p of an interval inside
+// a certified piece, as a value (T = I) or with g' (T = Jet<I>). V is computed once.
+template <class T, class I>
+T difference(const PieceRoot<I>& c0_root, const PieceRoot<I>& c1_root, const I& p) {
     const auto s0 = smallest_root_within(c0_root, p);
     const auto s1 = smallest_root_within(c1_root, p);
     if (!s0 || !s1) throw EvaluationFailed("s not refined inside its certified piece");
-    const DensitySlope<I> c0 = cubic_density_slope(Family::C0, p, *s0);
-    const DensitySlope<I> c1 = cubic_density_slope(Family::C1, p, *s1);
-    if (c0.status != FamilyStatus::certified) throw EvaluationFailed("C0: " + c0.message);
-    if (c1.status != FamilyStatus::certified) throw EvaluationFailed("C1: " + c1.message);
-    return {*c1.phi - *c0.phi, *c1.slope - *c0.slope};
+    std::optional<T> det0, det1;
+    T p_scalar = [&] {
+        if constexpr (std::is_same_v<T, I>) return p;
+        else return variable(p);
+    }();
+    if constexpr (std::is_same_v<T, I>) {
+        det0 = abs_determinant(cubic_basis(Family::C0, *s0, p));
+        det1 = abs_determinant(cubic_basis(Family::C1, *s1, p));
+    } else {
+        const auto jet0 = root_jet(Family::C0, p, *s0), jet1 = root_jet(Family::C1, p, *s1);
+        if (!jet0 || !jet1) throw EvaluationFailed("f_s may vanish: the implicit function theorem does not apply");
+        det0 = abs_determinant(cubic_basis(Family::C0, *jet0, p_scalar));
+        det1 = abs_determinant(cubic_basis(Family::C1, *jet1, p_scalar));
+    }
+    if (!det0 || !det1) throw EvaluationFailed("the sign of det B is not decided");
+    const T volume = enclose_ball_volume(p_scalar, 3);
+    return volume / *det1 - volume / *det0;
 }
 
-// g alone at a point or interval inside a certified piece (no derivative).
+template <class I>
+Jet<I> difference_jet(const PieceRoot<I>& c0_root, const PieceRoot<I>& c1_root, const I& p) {
+    return difference<Jet<I>>(c0_root, c1_root, p);
+}
+
 template <class I>
 I difference_value(const PieceRoot<I>& c0_root, const PieceRoot<I>& c1_root, const I& p) {
-    const auto s0 = smallest_root_within(c0_root, p);
-    const auto s1 = smallest_root_within(c1_root, p);
-    if (!s0 || !s1) throw EvaluationFailed("s not refined inside its certified piece");
-    const auto phi0 = density_of(p, cubic_basis(Family::C0, *s0, p));
-    const auto phi1 = density_of(p, cubic_basis(Family::C1, *s1, p));
-    if (!phi0 || !phi1) throw EvaluationFailed("the sign of det B is not decided");
-    return *phi1 - *phi0;
+    return difference<I>(c0_root, c1_root, p);
 }
 
 // The crossover equation as newton_isolate wants it (a value at a point, a Jet on a box),
@@ -246,9 +276,9 @@ CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Fiel
     CubicCrossover<I> result;
     const BallField partition_field{64};
     const Ball like = partition_field.integer(0);
-    // 75 first pieces of width 0.12: enclose_family_at certifies s over pieces narrower than 1/8.
+    // 150 first pieces of width 0.06: enclose_family_at (64-bit balls) certifies s over them.
     const double left_end = 1.0, right_end = 10.0;
-    const int first_pieces = 75;
+    const int first_pieces = 150;
     const double min_width = 1e-9;
     const std::size_t max_pieces = 20000;
     std::vector<std::pair<double, double>> pending;
@@ -287,6 +317,14 @@ CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Fiel
         const auto c1_root = certify_piece_root(Family::C1, p);
         if (!c0_root || !c1_root) {
             split("s not certified over the piece");
+            continue;
+        }
+        // The direct enclosure first: it needs no derivative.
+        const Ball direct = c1_root->phi - c0_root->phi;
+        if (a != left_end && (certainly_negative(direct) || certainly_positive(direct))) {
+            const int sign = certainly_negative(direct) ? -1 : 1;
+            piece.difference = outward_double(direct);
+            record(sign < 0 ? PieceClaim::negative : PieceClaim::positive, "g excludes 0 on the piece (direct)", sign);
             continue;
         }
         Jet<Ball> g{like, like};

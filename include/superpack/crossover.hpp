@@ -42,6 +42,7 @@ struct PieceRoot {
     I piece;
     I root_box;
     I root;  // s(p) for every p of the piece
+    I phi;   // phi(p) for every p of the piece
 };
 template <class I>
 std::optional<PieceRoot<I>> certify_piece_root(Family family, const I& piece);
