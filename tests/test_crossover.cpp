@@ -150,3 +150,36 @@ TEST_CASE("printed decimals are read as truncated and as rounded") {
     const Ball straddle = hull(field.rational(parse_rational("1.15089")), field.rational(parse_rational("1.15091")));
     CHECK(check_printed(straddle, "1.1509").truncated == Agreement::undecided);
 }
+
+TEST_CASE("crossover and slopes on the command line: one JSON document, exit codes") {
+    auto run = [](const std::string& arguments, int& status) {
+        const std::string command = std::string(SUPERPACK_BINARY) + " " + arguments + " 2>/dev/null";
+        FILE* pipe = popen(command.c_str(), "r");
+        REQUIRE(pipe != nullptr);
+        std::string out;
+        char buffer[4096];
+        while (fgets(buffer, sizeof buffer, pipe)) out += buffer;
+        const int raw = pclose(pipe);
+        status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+        return out;
+    };
+    int status = -1;
+    const auto cubic = nlohmann::json::parse(run("crossover cubic --digits 30 --json", status));
+    CHECK(status == 0);
+    CHECK(cubic["certified"] == true);
+    CHECK(cubic["unique_on"] == nlohmann::json::array({"1", "10"}));
+    CHECK(cubic["sign_left"] == "negative");
+    CHECK(cubic["sign_right"] == "positive");
+    CHECK(cubic["p"]["lo"].get<std::string>().rfind("1.150876953749930385621729966859", 0) == 0);
+    CHECK(cubic["pieces"]["undecided"] == 0);
+    CHECK(cubic["pieces"]["root"] == 1);
+    const auto octahedral = nlohmann::json::parse(run("crossover octahedral --json", status));
+    CHECK(status == 0);
+    CHECK(octahedral["densities_meet"] == "agree");
+    const auto slopes = nlohmann::json::parse(run("slopes --json", status));
+    CHECK(status == 0);
+    CHECK(slopes["a_plus_family"] == "C0");
+    CHECK(slopes["paper"]["a_plus"]["certified_vs_printed"]["as_truncated"] == "disagree");
+    run("crossover sideways", status);
+    CHECK(status == 2);
+}
