@@ -25,7 +25,9 @@ Json pieces_json(const std::vector<SignPiece>& pieces) {
 }  // namespace
 
 Json sign_piece_json(const SignPiece& piece) {
-    return Json{{"p", enclosure_json(piece.p)}, {"claim", to_string(piece.claim)}, {"reason", piece.reason},
+    // The endpoints are doubles; "exact" gives them as fractions so a checker can rebuild them.
+    const Json exact{{"lo", rational_text(Rational(piece.p.lower()))}, {"hi", rational_text(Rational(piece.p.upper()))}};
+    return Json{{"p", enclosure_json(piece.p)}, {"p_exact", exact}, {"claim", to_string(piece.claim)}, {"reason", piece.reason},
                 {"difference", optional_json(piece.difference)}, {"derivative", optional_json(piece.derivative)}};
 }
 
