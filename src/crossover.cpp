@@ -257,8 +257,10 @@ bool refine_root(const I& like, double lo, double hi, long digits, CubicCrossove
 
 }  // namespace
 
-// The partition is proved with 64-bit Arb balls: faster than binary64 intervals here, and
-// the pieces have exact double endpoints, so they are reported as binary64 intervals.
+// The partition is proved with 40-bit Arb balls: faster than binary64 intervals here (Arb
+// exp/log/gamma without conversions), and away from p*_c |g| >> 2^-40, so the pieces are the
+// same as at 53 or 64 bits (233 either way). The pieces have exact double endpoints, so they
+// are reported as binary64 intervals.
 DInterval outward_double(const Ball& x) {
     mpfr_t lo, hi;
     mpfr_init2(lo, 53);
@@ -274,9 +276,10 @@ template <class Field>
 CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Field& field, long digits) {
     using I = typename Field::Interval;
     CubicCrossover<I> result;
-    const BallField partition_field{64};
+    const BallField partition_field{40};
     const Ball like = partition_field.integer(0);
-    // 150 first pieces of width 0.06: enclose_family_at (64-bit balls) certifies s over them.
+    // 150 first pieces of width 0.06: enclose_family_at certifies s over each of them
+    // (at width 0.12 its starting box reaches 0 and Newton fails on most).
     const double left_end = 1.0, right_end = 10.0;
     const int first_pieces = 150;
     const double min_width = 1e-9;
