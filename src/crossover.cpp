@@ -255,8 +255,6 @@ bool refine_root(const I& like, double lo, double hi, long digits, CubicCrossove
     }
 }
 
-}  // namespace
-
 // The partition is proved with 40-bit Arb balls: faster than binary64 intervals here (Arb
 // exp/log/gamma without conversions), and away from p*_c |g| >> 2^-40, so the pieces are the
 // same as at 53 or 64 bits (233 either way). The pieces have exact double endpoints, so they
@@ -271,6 +269,8 @@ DInterval outward_double(const Ball& x) {
     mpfr_clear(hi);
     return result;
 }
+
+}  // namespace
 
 template <class Field>
 CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Field& field, long digits) {
