@@ -299,7 +299,7 @@ CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Fiel
         const auto [a, b] = pending.back();
         pending.pop_back();
         const Ball p = interval_from(like, a, b);
-        SignPiece piece{interval_from(DInterval(0.0), a, b)};
+        SignPiece piece{interval_from(DInterval(0.0), a, b), PieceClaim::undecided, "", std::nullopt, std::nullopt};
         auto record = [&](PieceClaim claim, const std::string& reason, int right_sign) {
             piece.claim = claim;
             piece.reason = reason;
@@ -442,7 +442,7 @@ T octahedral_equation(const T& p) {
 // Sign of Eq. (6) on [a, b] by direct evaluation, bisecting until decided.
 void octahedral_signs(double a, double b, std::vector<SignPiece>& pieces) {
     const DInterval p = interval_from(DInterval(0.0), a, b);
-    SignPiece piece{p};
+    SignPiece piece{p, PieceClaim::undecided, "", std::nullopt, std::nullopt};
     const Jet<DInterval> value = octahedral_equation(variable(p));
     piece.difference = value.value;
     piece.derivative = value.derivative;
@@ -478,7 +478,7 @@ OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover_impl(
     const NewtonResult<I>& newton = *result.newton;
     {
         const DInterval p = interval_from(DInterval(0.0), 0.5, lemma_end);
-        SignPiece piece{p};
+        SignPiece piece{p, PieceClaim::undecided, "", std::nullopt, std::nullopt};
         piece.difference = exp(p * log(DInterval(4.0))) - DInterval(3.0);
         const bool negative = certainly_negative(*piece.difference);
         piece.claim = negative ? PieceClaim::negative : PieceClaim::undecided;
@@ -487,7 +487,7 @@ OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover_impl(
     }
     octahedral_signs(lemma_end, root_lo, result.pieces);
     {
-        SignPiece piece{interval_from(DInterval(0.0), root_lo, root_hi), PieceClaim::undecided};
+        SignPiece piece{interval_from(DInterval(0.0), root_lo, root_hi), PieceClaim::undecided, "", std::nullopt, std::nullopt};
         const bool unique = newton.status == RootStatus::unique && contains(newton.initial_box, newton.box);
         piece.derivative = octahedral_equation(variable(piece.p)).derivative;
         piece.claim = unique ? PieceClaim::root : PieceClaim::undecided;
@@ -547,8 +547,10 @@ template <class Field>
 SphereSlopes<typename Field::Interval> certify_sphere_slopes_impl(const Field& field) {
     using I = typename Field::Interval;
     const I one = field.integer(1);
-    SphereSlopes<I> result{enclose_density_slope(Family::C0, one), enclose_density_slope(Family::C1, one),
-                           enclose_density_slope(Family::O0, one)};
+    SphereSlopes<I> result;
+    result.c0 = enclose_density_slope(Family::C0, one);
+    result.c1 = enclose_density_slope(Family::C1, one);
+    result.o0 = enclose_density_slope(Family::O0, one);
     if (result.o0.slope) result.a_minus = *result.o0.slope;
     if (result.c0.slope && result.c1.slope) {
         if (certainly_less(*result.c1.slope, *result.c0.slope)) {
