@@ -72,6 +72,17 @@ template <class I> Jet<I> pow_nonneg(const Jet<I>& x, const I& y) {
 }
 // x^y with both varying, x > 0: exp(y log x).
 template <class I> Jet<I> pow_nonneg(const Jet<I>& x, const Jet<I>& y) { return exp(y * log(x)); }
+// |x|^y with both varying (d/dp of the contact equations, whose exponent is 2p):
+// d = y sign(x) |x|^(y-1) dx + |x|^y log|x| dy. The log term needs x != 0 and is skipped
+// when dy is exactly 0, so a constant exponent keeps the |x|^y behaviour at x = 0.
+template <class I> Jet<I> pow_abs(const Jet<I>& x, const Jet<I>& y) {
+    const I one = field_of(y.value).integer(1);
+    const I value = pow_abs(x.value, y.value);
+    I derivative = y.value * pow_signed(x.value, y.value - one) * x.derivative;
+    if (!(contains_zero(y.derivative) && width_upper(y.derivative) == 0.0))
+        derivative = derivative + value * log(abs(x.value)) * y.derivative;
+    return {value, derivative};
+}
 
 // Uniform accessors so that generic code can read the value of either scalar.
 template <class I> const I& value_of(const Jet<I>& a) { return a.value; }

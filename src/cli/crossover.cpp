@@ -1,0 +1,109 @@
+// superpack crossover cubic|octahedral [--digits D] [--json]
+#include <chrono>
+#include <memory>
+
+#include "common.hpp"
+#include "superpack/crossover_json.hpp"
+#include "superpack/decimal.hpp"
+
+namespace superpack::cli {
+
+namespace {
+
+struct CrossoverOptions {
+    std::string kind, digits;
+    bool json = false;
+};
+
+template <class I>
+void row(const std::string& name, const std::optional<I>& x, int digits) {
+    if (!x) {
+        std::cout << "  " << name << ": not certified\n";
+        return;
+    }
+    const DecimalEnclosure text = to_decimal(*x, digits);
+    std::cout << "  " << name << std::string(name.size() < 14 ? 14 - name.size() : 1, ' ') << "[" << text.lo << ", "
+              << text.hi << "]  width " << width_text(*x) << "\n";
+}
+
+int print_digits(long digits) { return static_cast<int>(std::max(15L, digits + 2)); }
+
+template <class I>
+void print_cubic(const CubicCrossover<I>& crossover, long digits) {
+    std::cout << "cubic crossover: phi_C0(p) = phi_C1(p), g = phi_C1 - phi_C0 on [1, 10]\n";
+    row("p*_c", crossover.p, print_digits(digits));
+    row("phi*_c", crossover.phi, print_digits(digits));
+    std::size_t counts[4] = {0, 0, 0, 0};
+    for (const auto& piece : crossover.pieces) ++counts[static_cast<int>(piece.claim)];
+    std::cout << "  pieces of [1, 10]: " << crossover.pieces.size() << " (negative " << counts[0] << ", positive "
+              << counts[1] << ", root " << counts[2] << ", undecided " << counts[3] << ")\n";
+    if (crossover.certified)
+        std::cout << "  proved: g < 0 on (1, p*_c) (C0 denser), g > 0 on (p*_c, 10] (C1 denser); p*_c is the only "
+                     "zero of g in (1, 10]\n";
+    else
+        std::cout << "  not certified: " << crossover.message << "\n";
+}
+
+template <class I>
+void print_octahedral(const OctahedralCrossover<I>& crossover, long digits) {
+    std::cout << "octahedral crossover: Eq. (6) 2 (1 - 2^(1-2p))^(1/(2p)) = 1 on (1/2, 1]\n";
+    if (crossover.newton) {
+        const std::optional<I> root = crossover.newton->box;
+        row("root of (6)", root, print_digits(digits));
+    }
+    row("ln3/ln4", crossover.ln3_over_ln4, print_digits(digits));
+    std::cout << "  root of Eq. (6) overlaps ln3/ln4: " << to_string(crossover.closed_form) << "\n";
+    row("phi_O0", crossover.o0.phi, print_digits(digits));
+    row("phi_O1", crossover.o1_phi, print_digits(digits));
+    std::cout << "  O0 and O1 (q = 0, s = 1) densities meet: " << to_string(crossover.densities_meet)
+              << "; same lattice (B_O0 = U B_O1): " << (crossover.same_lattice ? "yes" : "not shown") << "\n";
+    if (!crossover.certified) std::cout << "  not certified: " << crossover.message << "\n";
+}
+
+int run(const CrossoverOptions& options) {
+    if (options.kind != "cubic" && options.kind != "octahedral")
+        throw Failure(exit_usage, "crossover: expected 'cubic' or 'octahedral', got '" + options.kind + "'");
+    return with_field(options.digits, [&](const auto& field, long digits) {
+        const auto start = std::chrono::steady_clock::now();
+        Json document = header_json("crossover", field, digits);
+        bool certified = false;
+        std::string message;
+        if (options.kind == "cubic") {
+            std::cerr << "crossover: proving the sign of phi_C1 - phi_C0 on [1, 10]...\n";
+            const auto crossover = certify_cubic_crossover(field, digits);
+            document.update(cubic_crossover_json(crossover));
+            if (!options.json) print_cubic(crossover, digits);
+            certified = crossover.certified;
+            message = crossover.message;
+        } else {
+            const auto crossover = certify_octahedral_crossover(field, digits);
+            document.update(octahedral_crossover_json(crossover));
+            if (!options.json) print_octahedral(crossover, digits);
+            certified = crossover.certified;
+            message = crossover.message;
+        }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        document["seconds"] = seconds;
+        if (options.json) std::cout << document.dump(2) << "\n";
+        if (!certified) throw Failure(exit_undecided, "crossover " + options.kind + ": undecided: " + message);
+        return exit_ok;
+    });
+}
+
+}  // namespace
+
+void add_crossover(CLI::App& app) {
+    auto options = std::make_shared<CrossoverOptions>();
+    CLI::App* command = app.add_subcommand(
+        "crossover", "Certified crossover p*_c (C0 = C1, unique on [1, 10]) or p*_o (Eq. 6, O0 meets O1)");
+    command->add_option("kind", options->kind, "cubic or octahedral")->required();
+    command->add_option("--digits", options->digits, "significant digits (Arb balls, up to 100); default binary64");
+    command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->callback([options] { run(*options); });
+}
+
+namespace {
+const SubcommandRegistration registration("crossover", add_crossover);
+}  // namespace
+
+}  // namespace superpack::cli

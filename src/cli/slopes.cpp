@@ -1,0 +1,75 @@
+// superpack slopes [--digits D] [--json]
+#include <memory>
+
+#include "common.hpp"
+#include "superpack/crossover_json.hpp"
+#include "superpack/decimal.hpp"
+
+namespace superpack::cli {
+
+namespace {
+
+struct SlopesOptions {
+    std::string digits;
+    bool json = false;
+};
+
+template <class I>
+void row(const std::string& name, const std::optional<I>& x) {
+    if (!x) {
+        std::cout << "  " << name << ": not certified\n";
+        return;
+    }
+    const DecimalEnclosure text = to_decimal(*x, 20);
+    std::cout << "  " << name << std::string(name.size() < 22 ? 22 - name.size() : 1, ' ') << "[" << text.lo << ", "
+              << text.hi << "]  width " << width_text(*x) << "\n";
+}
+
+template <class I>
+void print_table(const SphereSlopes<I>& slopes) {
+    std::cout << "slopes of the family densities at p = 1\n";
+    row("C0 dphi/dp (p -> 1+)", slopes.c0.slope);
+    row("C1 dphi/dp (p -> 1+)", slopes.c1.slope);
+    row("O0 dphi/dp (p -> 1-)", slopes.o0.slope);
+    row("a_minus", slopes.a_minus);
+    row("a_plus (" + (slopes.a_plus_family.empty() ? std::string("?") : slopes.a_plus_family) + ")", slopes.a_plus);
+    row("paper closed a_minus", slopes.closed_minus);
+    row("paper closed a_plus", slopes.closed_plus);
+    std::cout << "  a_minus vs closed form: " << to_string(slopes.minus_vs_closed)
+              << "; vs printed -0.02941...: " << to_string(slopes.minus_printed.truncated) << "\n";
+    std::cout << "  a_plus vs closed form: " << to_string(slopes.plus_vs_closed)
+              << "; vs printed 0.3555...: " << to_string(slopes.plus_printed.truncated)
+              << "; closed form vs printed: " << to_string(slopes.closed_plus_printed.truncated) << "\n";
+}
+
+int run(const SlopesOptions& options) {
+    return with_field(options.digits, [&](const auto& field, long digits) {
+        const auto slopes = certify_sphere_slopes(field);
+        if (options.json) {
+            Json document = header_json("slopes", field, digits);
+            document.update(sphere_slopes_json(slopes));
+            std::cout << document.dump(2) << "\n";
+        } else {
+            print_table(slopes);
+        }
+        if (!slopes.a_minus || !slopes.a_plus) throw Failure(exit_undecided, "slopes: undecided at this precision");
+        return exit_ok;
+    });
+}
+
+}  // namespace
+
+void add_slopes(CLI::App& app) {
+    auto options = std::make_shared<SlopesOptions>();
+    CLI::App* command =
+        app.add_subcommand("slopes", "One-sided slopes a_minus, a_plus of the maximal density at p = 1 vs the paper");
+    command->add_option("--digits", options->digits, "significant digits (Arb balls); default binary64");
+    command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->callback([options] { run(*options); });
+}
+
+namespace {
+const SubcommandRegistration registration("slopes", add_slopes);
+}  // namespace
+
+}  // namespace superpack::cli
