@@ -124,18 +124,15 @@ bool enclosures_meet(const I& a, const I& b) {
     return intersect(meet, a, b);
 }
 
-}  // namespace
-
 template <class Field>
-HexagonLattice<typename Field::Interval> enclose_hexagon_lattice(const Rational& t, const Rational& p,
-                                                                  const Field& field) {
+HexagonLattice<typename Field::Interval> hexagon_lattice_in(const Rational& t, const Rational& p, const Field& field) {
     const auto q = field.integer(2) * field.rational(p);
     return lattice_at(field.rational(t), q, enclose_ball_volume(field.rational(p), 2));
 }
 
 template <class Field>
-SuperdiskReport<typename Field::Interval> analyse_superdisk(const Rational& p, const Field& field,
-                                                             const SuperdiskOptions& options) {
+SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p, const Field& field,
+                                                                const SuperdiskOptions& options) {
     using I = typename Field::Interval;
     SuperdiskReport<I> report(field.integer(0));
     const I pp = field.rational(p);
@@ -338,9 +335,19 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk(const Rational& p, c
     return report;
 }
 
-template SuperdiskReport<DInterval> analyse_superdisk(const Rational&, const DoubleField&, const SuperdiskOptions&);
-template SuperdiskReport<Ball> analyse_superdisk(const Rational&, const BallField&, const SuperdiskOptions&);
-template HexagonLattice<DInterval> enclose_hexagon_lattice(const Rational&, const Rational&, const DoubleField&);
-template HexagonLattice<Ball> enclose_hexagon_lattice(const Rational&, const Rational&, const BallField&);
+}  // namespace
+
+SuperdiskReport<DInterval> analyse_superdisk(const Rational& p, const DoubleField& field, const SuperdiskOptions& options) {
+    return analyse_superdisk_in(p, field, options);
+}
+SuperdiskReport<Ball> analyse_superdisk(const Rational& p, const BallField& field, const SuperdiskOptions& options) {
+    return analyse_superdisk_in(p, field, options);
+}
+HexagonLattice<DInterval> enclose_hexagon_lattice(const Rational& t, const Rational& p, const DoubleField& field) {
+    return hexagon_lattice_in(t, p, field);
+}
+HexagonLattice<Ball> enclose_hexagon_lattice(const Rational& t, const Rational& p, const BallField& field) {
+    return hexagon_lattice_in(t, p, field);
+}
 
 }  // namespace superpack

@@ -118,13 +118,12 @@ struct SuperdiskOptions {
     std::size_t max_pieces = 1000;
 };
 
-template <class Field>
-SuperdiskReport<typename Field::Interval> analyse_superdisk(const Rational& p, const Field& field,
-                                                             const SuperdiskOptions& options = {});
+SuperdiskReport<DInterval> analyse_superdisk(const Rational& p, const DoubleField& field,
+                                             const SuperdiskOptions& options = {});
+SuperdiskReport<Ball> analyse_superdisk(const Rational& p, const BallField& field, const SuperdiskOptions& options = {});
 
 // The lattice at one parameter t (a point), certified by Krawczyk.
-template <class Field>
-HexagonLattice<typename Field::Interval> enclose_hexagon_lattice(const Rational& t, const Rational& p,
-                                                                  const Field& field);
+HexagonLattice<DInterval> enclose_hexagon_lattice(const Rational& t, const Rational& p, const DoubleField& field);
+HexagonLattice<Ball> enclose_hexagon_lattice(const Rational& t, const Rational& p, const BallField& field);
 
 }  // namespace superpack
