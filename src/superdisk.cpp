@@ -28,11 +28,24 @@ const char* to_string(OptimumStatus status) {
 namespace {
 
 // A floating-point guess of v(t) (STYLE P6: only a starting box, re-verified by Krawczyk).
+// v is the boundary point at polar angle phi in (theta, theta + pi) where the q-norm of
+// v - u crosses 1 (it grows from 0 at v = u to 2 at v = -u): bisection, then Newton steps.
 std::array<double, 2> guess_v(double t, double q) {
     const double x = boundary_x(t, q), y = t * x;
-    // The circle's answer, u turned by 60 degrees, then Newton steps.
-    double a = 0.5 * x - 0.8660254037844386 * y, b = 0.8660254037844386 * x + 0.5 * y;
+    const double theta = std::atan2(y, x), pi = 3.141592653589793;
+    auto on_boundary = [q](double angle) {
+        const double c = std::cos(angle), s = std::sin(angle);
+        const double r = std::pow(std::pow(std::fabs(c), q) + std::pow(std::fabs(s), q), -1.0 / q);
+        return std::array<double, 2>{r * c, r * s};
+    };
+    double lo = theta, hi = theta + pi;
     for (int step = 0; step < 60; ++step) {
+        const double mid = 0.5 * (lo + hi);
+        const auto v = on_boundary(mid);
+        (std::pow(std::fabs(v[0] - x), q) + std::pow(std::fabs(v[1] - y), q) < 1 ? lo : hi) = mid;
+    }
+    auto [a, b] = on_boundary(0.5 * (lo + hi));
+    for (int step = 0; step < 4; ++step) {
         const auto fa = contact_equations(variable(a), constant(b), constant(t), q);
         const auto fb = contact_equations(constant(a), variable(b), constant(t), q);
         const double j00 = fa[0].derivative, j01 = fb[0].derivative, j10 = fa[1].derivative, j11 = fb[1].derivative;
@@ -40,9 +53,9 @@ std::array<double, 2> guess_v(double t, double q) {
         if (!(std::fabs(det) > 0)) break;
         const double f0 = fa[0].value, f1 = fa[1].value;
         const double da = (j11 * f0 - j01 * f1) / det, db = (-j10 * f0 + j00 * f1) / det;
+        if (!std::isfinite(da) || !std::isfinite(db)) break;
         a -= da;
         b -= db;
-        if (std::fabs(da) + std::fabs(db) < 1e-17) break;
     }
     return {a, b};
 }
@@ -67,6 +80,10 @@ Evaluation<I> evaluate(const I& piece, const I& q, double margin, bool with_deri
     const double lo = mid_double(lower_point(piece)), hi = mid_double(upper_point(piece));
     const auto g0 = guess_v(lo, qd), g1 = guess_v(hi, qd);
     std::vector<I> box;
+    if (!std::isfinite(g0[0] + g0[1] + g1[0] + g1[1])) {
+        result.reason = "no floating-point guess for v";
+        return result;
+    }
     for (int k = 0; k < 2; ++k) {
         const double low = std::min(g0[k], g1[k]), high = std::max(g0[k], g1[k]);
         const double pad = 0.5 * (high - low) + margin;
