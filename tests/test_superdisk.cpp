@@ -110,3 +110,38 @@ TEST_CASE("superdisk identities: the disk, the square, the concave case", "[supe
     CHECK(star.status == OptimumStatus::not_applicable);
     CHECK(star.pieces.empty());
 }
+
+TEST_CASE("superdisk CLI: one JSON document with the contract's names; concave p has no optimum", "[superdisk]") {
+    auto run = [](const std::string& arguments, int& status) {
+        const std::string command = std::string(SUPERPACK_BINARY) + " " + arguments + " 2>/dev/null";
+        std::string out;
+        FILE* pipe = popen(command.c_str(), "r");
+        REQUIRE(pipe != nullptr);
+        char buffer[4096];
+        while (fgets(buffer, sizeof buffer, pipe)) out += buffer;
+        const int code = pclose(pipe);
+        status = WIFEXITED(code) ? WEXITSTATUS(code) : -1;
+        return out;
+    };
+    int status = -1;
+    const auto document = nlohmann::json::parse(run("superdisk --p 2 --json", status));
+    CHECK(status == 0);
+    for (const char* key : {"area", "lattices", "optimal_phi", "optimal_lattice", "attained_by", "gap", "proof"})
+        CHECK(document.contains(key));
+    CHECK(document["lattices"]["Lambda0"].contains("phi"));
+    CHECK(document["lattices"]["Lambda1"].contains("phi"));
+    CHECK(document["attained_by"] == "Lambda0");
+    CHECK(meets(from_doubles(DInterval(0), std::stod(std::string(document["optimal_phi"]["lo"])),
+                             std::stod(std::string(document["optimal_phi"]["hi"]))),
+                std::string(superdisk_golden()["2"]["optimal_phi"])));
+    CHECK(!document["proof"]["pieces"].empty());
+    const auto concave = nlohmann::json::parse(run("superdisk --p 0.3 --json", status));
+    CHECK(status == 0);
+    CHECK_FALSE(concave.contains("optimal_phi"));
+    CHECK(concave["status"] == "not_applicable");
+    run("superdisk --scan 1:2:0.5", status);
+    CHECK(status == 2);
+    const std::string csv = run("superdisk --scan 1:1.5:0.5 --csv", status);
+    CHECK(status == 0);
+    CHECK(std::count(csv.begin(), csv.end(), '\n') == 3);
+}

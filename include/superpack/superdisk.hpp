@@ -114,7 +114,7 @@ struct SuperdiskReport {
 };
 
 struct SuperdiskOptions {
-    double relative_tolerance = 1e-10;  // stopping rule of the branch and bound (a guess)
+    double relative_tolerance = 4e-10;  // stopping rule of the branch and bound (a guess)
     std::size_t max_pieces = 1000;
 };
 
