@@ -187,7 +187,12 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
         report.optimal_lattice.basis = {{{one, one}, {one, -one}}};
         report.optimal_lattice.determinant = field.integer(2);
         report.optimal_lattice.phi = one;
+        // Lambda1 (u = (1, 0), v = (1/2, 1/2)) is itself a tiling lattice of the square.
         report.attained_by = "tiling";
+        if (report.lambda1.status == RootStatus::unique) {
+            report.gap_lambda1 = one - report.lambda1.phi;
+            if (enclosures_meet(report.lambda1.phi, one)) report.attained_by = "Lambda1";
+        }
         report.message = "p = 1/2: the square |x|+|y|<=1 tiles the plane (lattice (1,1),(1,-1)), phi = 1";
         return report;
     }

@@ -105,6 +105,8 @@ TEST_CASE("superdisk identities: the disk, the square, the concave case", "[supe
     CHECK(meets(square.optimal_phi, "1"));
     CHECK(meets(square.lambda1.phi, "1"));
     CHECK(meets(square.area, "2"));
+    CHECK(square.attained_by == "Lambda1");
+    CHECK(contains_zero(square.gap_lambda1));
     // p < 1/2: concave, no optimum claimed.
     const auto star = analyse_superdisk(parse_rational("0.3"), DoubleField{});
     CHECK(star.status == OptimumStatus::not_applicable);

@@ -72,9 +72,10 @@ Json report_json(const SuperdiskReport<I>& report) {
         for (const auto& component : report.argmin_t) argmin.push_back(enclosure_json(component));
         document["argmin_t"] = argmin;
         document["attained_by"] = report.attained_by;
-        if (!report.tiling)
-            document["gap"] = {{"Lambda0", enclosure_json(report.gap_lambda0)},
-                               {"Lambda1", enclosure_json(report.gap_lambda1)}};
+        Json gap;
+        if (report.lambda0.status == RootStatus::unique) gap["Lambda0"] = enclosure_json(report.gap_lambda0);
+        if (report.lambda1.status == RootStatus::unique) gap["Lambda1"] = enclosure_json(report.gap_lambda1);
+        document["gap"] = gap;
     }
     if (!report.tiling) document["proof"] = proof_json(report);
     return document;
@@ -98,9 +99,9 @@ void print_table(const SuperdiskReport<I>& report, const std::string& p, const c
     }
     if (report.status == OptimumStatus::certified) {
         row("optimal phi", report.optimal_phi);
+        if (report.lambda0.status == RootStatus::unique) row("gap Lambda0", report.gap_lambda0);
+        if (report.lambda1.status == RootStatus::unique) row("gap Lambda1", report.gap_lambda1);
         if (!report.tiling) {
-            row("gap Lambda0", report.gap_lambda0);
-            row("gap Lambda1", report.gap_lambda1);
             for (const auto& component : report.argmin_t) row("argmin t", component);
             std::cout << "  pieces          " << report.pieces.size() << "\n";
         }
