@@ -263,7 +263,7 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
             open.push(piece);
             return;
         }
-        if (width_upper(piece.t) < 1e-8 || closed.size() + open.size() + 2 > options.max_pieces) {
+        if (width_upper(piece.t) < 1e-12 || closed.size() + open.size() + 2 > options.max_pieces) {
             closed.push_back(piece);
             return;
         }
