@@ -1,0 +1,200 @@
+// superpack superdisk --p P [--digits D] [--json]
+// superpack superdisk --scan a:b:h --csv
+#include <memory>
+
+#include "common.hpp"
+#include "superpack/decimal.hpp"
+#include "superpack/superdisk.hpp"
+
+namespace superpack::cli {
+
+namespace {
+
+struct SuperdiskCliOptions {
+    std::string p, digits, scan;
+    bool json = false, csv = false;
+};
+
+template <class I>
+Json lattice_json(const HexagonLattice<I>& lattice) {
+    Json result;
+    result["status"] = to_string(lattice.status);
+    result["t"] = enclosure_json(lattice.t);
+    if (lattice.status != RootStatus::unique) {
+        result["reason"] = lattice.reason;
+        return result;
+    }
+    Json basis = Json::array();
+    for (const auto& row : lattice.basis) basis.push_back(Json::array({enclosure_json(row[0]), enclosure_json(row[1])}));
+    result["basis"] = basis;
+    result["determinant"] = enclosure_json(lattice.determinant);
+    result["phi"] = enclosure_json(lattice.phi);
+    return result;
+}
+
+template <class I>
+Json proof_json(const SuperdiskReport<I>& report) {
+    Json pieces = Json::array();
+    for (const auto& piece : report.pieces) {
+        Json entry;
+        entry["t"] = enclosure_json(piece.t);
+        entry["verdict"] = to_string(piece.verdict);
+        entry["reason"] = piece.reason;
+        if (piece.verdict != PieceVerdict::undecided) {
+            entry["lower_bound_D"] = enclosure_json(lower_point(piece.lower_bound));
+            entry["v"] = Json::array({enclosure_json(piece.v[0]), enclosure_json(piece.v[1])});
+            entry["derivative"] = enclosure_json(piece.derivative);
+        }
+        pieces.push_back(entry);
+    }
+    Json proof;
+    proof["parameter"] = "u(t) = (1, t) / ||(1, t)||_(2p), t in [0, 1]; v(t) on bd K with v - u on bd K, det(u, v) > 0; "
+                         "D(t) = det(u, v); packing determinant 4 D";
+    proof["symmetry"] = "D is invariant under the dihedral group of the square, so t in [0, 1] covers every u (NOTES.md 7)";
+    proof["upper_bound_witness"] = lattice_json(report.optimal_lattice);
+    proof["pieces"] = pieces;
+    return proof;
+}
+
+template <class I>
+Json report_json(const SuperdiskReport<I>& report) {
+    Json document;
+    document["area"] = enclosure_json(report.area);
+    document["lattices"] = {{"Lambda0", lattice_json(report.lambda0)}, {"Lambda1", lattice_json(report.lambda1)}};
+    document["status"] = to_string(report.status);
+    document["message"] = report.message;
+    if (report.status == OptimumStatus::not_applicable) return document;
+    if (report.status == OptimumStatus::certified) {
+        document["optimal_phi"] = enclosure_json(report.optimal_phi);
+        document["optimal_determinant"] = enclosure_json(report.optimal_determinant);
+        document["optimal_lattice"] = lattice_json(report.optimal_lattice);
+        Json argmin = Json::array();
+        for (const auto& component : report.argmin_t) argmin.push_back(enclosure_json(component));
+        document["argmin_t"] = argmin;
+        document["attained_by"] = report.attained_by;
+        Json gap;
+        if (report.lambda0.status == RootStatus::unique) gap["Lambda0"] = enclosure_json(report.gap_lambda0);
+        if (report.lambda1.status == RootStatus::unique) gap["Lambda1"] = enclosure_json(report.gap_lambda1);
+        document["gap"] = gap;
+    }
+    if (!report.tiling) document["proof"] = proof_json(report);
+    return document;
+}
+
+template <class I>
+void print_table(const SuperdiskReport<I>& report, const std::string& p, const char* backend) {
+    std::cout << "superdisk |x|^(2p) + |y|^(2p) <= 1 at p = " << p << "  (" << backend << ")\n";
+    auto row = [](const std::string& name, const I& x) {
+        const DecimalEnclosure text = to_decimal(x, 20);
+        std::cout << "  " << name << std::string(name.size() < 16 ? 16 - name.size() : 1, ' ') << "[" << text.lo
+                  << ", " << text.hi << "]  width " << width_text(x) << "\n";
+    };
+    row("area", report.area);
+    for (const auto* lattice : {&report.lambda0, &report.lambda1}) {
+        const std::string name = lattice == &report.lambda0 ? "Lambda0" : "Lambda1";
+        if (lattice->status == RootStatus::unique)
+            row("phi " + name, lattice->phi);
+        else
+            std::cout << "  phi " << name << "  undecided: " << lattice->reason << "\n";
+    }
+    if (report.status == OptimumStatus::certified) {
+        row("optimal phi", report.optimal_phi);
+        if (report.lambda0.status == RootStatus::unique) row("gap Lambda0", report.gap_lambda0);
+        if (report.lambda1.status == RootStatus::unique) row("gap Lambda1", report.gap_lambda1);
+        if (!report.tiling) {
+            for (const auto& component : report.argmin_t) row("argmin t", component);
+            std::cout << "  pieces          " << report.pieces.size() << "\n";
+        }
+        std::cout << "  attained by     " << report.attained_by << "\n";
+    }
+    std::cout << "  note: " << report.message << "\n";
+}
+
+// a:b:h, each exact.
+std::vector<Rational> parse_scan(const std::string& text) {
+    const auto first = text.find(':'), second = text.find(':', first == std::string::npos ? 0 : first + 1);
+    if (first == std::string::npos || second == std::string::npos)
+        throw InputError("--scan wants a:b:h, got '" + text + "'");
+    const Rational a = parse_p(text.substr(0, first)), b = parse_p(text.substr(first + 1, second - first - 1)),
+                   h = parse_p(text.substr(second + 1));
+    if (b < a) throw InputError("--scan a:b:h needs a <= b");
+    std::vector<Rational> values;
+    for (Rational p = a; p <= b; p += h) {
+        values.push_back(p);
+        if (values.size() > 100000) throw InputError("--scan: more than 100000 values of p");
+    }
+    return values;
+}
+
+template <class I>
+std::string csv_pair(const I& x) {
+    const DecimalEnclosure text = to_decimal(x, 17);
+    return text.lo + "," + text.hi;
+}
+
+int run_scan(const SuperdiskCliOptions& options) {
+    const std::vector<Rational> values = parse_scan(options.scan);
+    return with_field(options.digits, [&](const auto& field, long digits) {
+        (void)digits;
+        std::cout << "p,phi_Lambda0_lo,phi_Lambda0_hi,phi_Lambda1_lo,phi_Lambda1_hi,optimal_phi_lo,optimal_phi_hi,"
+                     "attained_by\n";
+        int code = exit_ok;
+        std::size_t done = 0;
+        for (const Rational& p : values) {
+            const auto report = analyse_superdisk(p, field);
+            auto family = [](const auto& lattice) { return lattice.status == RootStatus::unique ? csv_pair(lattice.phi) : std::string(","); };
+            std::cout << decimal_or_fraction_text(p) << "," << family(report.lambda0) << "," << family(report.lambda1) << ","
+                      << (report.status == OptimumStatus::certified ? csv_pair(report.optimal_phi) : std::string(","))
+                      << "," << report.attained_by << "\n";
+            if (report.status == OptimumStatus::undecided) code = exit_undecided;
+            if (++done % 20 == 0) std::cerr << "superdisk scan: " << done << " / " << values.size() << "\n";
+        }
+        if (code != exit_ok) throw Failure(code, "superdisk scan: some optimum undecided");
+        return code;
+    });
+}
+
+int run(const SuperdiskCliOptions& options) {
+    require_rounding_self_test();
+    if (!options.scan.empty()) {
+        if (!options.csv) throw Failure(exit_usage, "--scan needs --csv");
+        return run_scan(options);
+    }
+    if (options.p.empty()) throw Failure(exit_usage, "superdisk needs --p P or --scan a:b:h --csv");
+    const Rational p = parse_p(options.p);
+    return with_field(options.digits, [&](const auto& field, long digits) {
+        const auto report = analyse_superdisk(p, field);
+        if (options.json) {
+            Json document = header_json("superdisk", field, digits);
+            document["p"] = options.p;
+            document["p_exact"] = rational_text(p);
+            document.update(report_json(report));
+            std::cout << document.dump(2) << "\n";
+        } else {
+            print_table(report, options.p, field.backend());
+        }
+        if (report.status == OptimumStatus::undecided)
+            throw Failure(exit_undecided, "superdisk: undecided: " + report.message);
+        return exit_ok;
+    });
+}
+
+}  // namespace
+
+void add_superdisk(CLI::App& app) {
+    auto options = std::make_shared<SuperdiskCliOptions>();
+    CLI::App* command = app.add_subcommand(
+        "superdisk", "Superdisk: the Lambda0/Lambda1 lattices and the certified optimal packing density (p >= 1/2)");
+    command->add_option("--p", options->p, "deformation parameter: a decimal (1.25) or a fraction (5/4)");
+    command->add_option("--digits", options->digits, "significant digits (Arb balls); default: binary64 intervals");
+    command->add_option("--scan", options->scan, "a:b:h: every p = a, a + h, ..., <= b (with --csv)");
+    command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->add_flag("--csv", options->csv, "with --scan: one CSV row per p on stdout");
+    command->callback([options] { run(*options); });
+}
+
+namespace {
+const SubcommandRegistration registration("superdisk", add_superdisk);
+}  // namespace
+
+}  // namespace superpack::cli
