@@ -122,28 +122,30 @@ Real pow_signed(const Real& x, const Real& y) {
 Real gamma(const Real& x) {
     if (!positive(x)) throw std::domain_error("gamma of an interval that may be <= 0");
     const mpfr_prec_t precision = x.precision();
-    mpfr_t down_lo, up_lo, down_hi, up_hi;
-    mpfr_inits2(precision, down_lo, up_lo, down_hi, up_hi, static_cast<mpfr_ptr>(nullptr));
-    mpfr_gamma(down_lo, x.lo(), MPFR_RNDD);
-    mpfr_gamma(up_lo, x.lo(), MPFR_RNDU);
-    mpfr_gamma(down_hi, x.hi(), MPFR_RNDD);
-    mpfr_gamma(up_hi, x.hi(), MPFR_RNDU);
-    const mpq_class left_of_minimum(14616, 10000), right_of_minimum(14617, 10000), minimum_value(8856, 10000);
-    Real result(precision);
-    if (mpfr_cmp_q(x.lo(), right_of_minimum.get_mpq_t()) >= 0) {
-        mpfi_interv_fr(result.get(), down_lo, up_hi);  // increasing
-    } else if (mpfr_cmp_q(x.hi(), left_of_minimum.get_mpq_t()) <= 0) {
-        mpfi_interv_fr(result.get(), down_hi, up_lo);  // decreasing
-    } else {
-        // x may hold the minimum: below by Gamma(x0) > 0.8856, above by the larger end value.
-        mpfr_t floor_value;
-        mpfr_init2(floor_value, precision);
-        mpfr_set_q(floor_value, minimum_value.get_mpq_t(), MPFR_RNDD);
-        mpfi_interv_fr(result.get(), floor_value, mpfr_cmp(up_lo, up_hi) > 0 ? up_lo : up_hi);
-        mpfr_clear(floor_value);
-    }
-    mpfr_clears(down_lo, up_lo, down_hi, up_hi, static_cast<mpfr_ptr>(nullptr));
-    return result;
+    // Gamma is convex on (0, oo) and Gamma' = Gamma psi with psi (digamma) increasing, so the
+    // sign of psi at the ends decides monotonicity, and the maximum is at an end.
+    Real gamma_lo(precision), gamma_hi(precision), psi_lo(precision), psi_hi(precision);
+    auto at = [&](Real& result, int (*function)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t), mpfr_srcptr point) {
+        mpfr_t down, up;
+        mpfr_inits2(precision, down, up, static_cast<mpfr_ptr>(nullptr));
+        function(down, point, MPFR_RNDD);
+        function(up, point, MPFR_RNDU);
+        mpfi_interv_fr(result.get(), down, up);
+        mpfr_clears(down, up, static_cast<mpfr_ptr>(nullptr));
+    };
+    at(gamma_lo, mpfr_gamma, x.lo());
+    at(gamma_hi, mpfr_gamma, x.hi());
+    at(psi_lo, mpfr_digamma, x.lo());
+    at(psi_hi, mpfr_digamma, x.hi());
+    if (mpfr_sgn(psi_lo.lo()) >= 0) return hull(lower_point(gamma_lo), upper_point(gamma_hi));  // increasing
+    if (mpfr_sgn(psi_hi.hi()) <= 0) return hull(lower_point(gamma_hi), upper_point(gamma_lo));  // decreasing
+    // x holds the minimum. Mean value: Gamma(t) = Gamma(a) + Gamma(xi) psi(xi) (t - a) with
+    // Gamma(xi) in (0, M], M the larger end value, psi(xi) in [psi(a), psi(b)], t - a in [0, b - a].
+    const Real top = upper_point(hull(gamma_lo, gamma_hi));
+    const Real zero(precision);
+    const Real spread = hull(zero, upper_point(x) - lower_point(x));
+    const Real range = gamma_lo + hull(zero, top) * hull(psi_lo, psi_hi) * spread;
+    return hull(lower_point(range), top);
 }
 
 Real hull(const Real& a, const Real& b) {

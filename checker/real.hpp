@@ -51,8 +51,8 @@ Real abs(const Real& x);
 Real pow_abs(const Real& x, const Real& y);
 // sign(x) |x|^y, the derivative kernel of |x|^(y+1); [-M, M] when x may change sign.
 Real pow_signed(const Real& x, const Real& y);
-// Gamma on x > 0 from MPFR's correctly rounded mpfr_gamma at the endpoints, with the
-// monotonicity of Gamma on each side of its minimum (x0 in [1.4616, 1.4617], Gamma(x0) > 0.8856).
+// Gamma on x > 0 from MPFR's correctly rounded mpfr_gamma and mpfr_digamma at the endpoints:
+// monotone where digamma has one sign, else a mean-value lower bound around the minimum.
 Real gamma(const Real& x);
 
 Real hull(const Real& a, const Real& b);
