@@ -38,7 +38,9 @@ void check_cubic(Context& context, const Json& proof, const Json& data, bool c1,
     const CubicEquation equation{c1, p};
     if (context.string_at(proof, "kind", "proof") != "all") context.malformed("proof.kind", "expected \"all\"");
     const Json& cases = context.member(proof, "cases", "proof");
-    if (!cases.is_array() || cases.size() != 2) context.malformed("proof.cases", "expected a Newton leaf and a partition");
+    if (!cases.is_array()) context.malformed("proof.cases", "expected an array");
+    // A missing case is a gap in the proof (invalid), not a damaged file.
+    context.require(cases.size() == 2, "proof.cases", "expected two cases: a Newton leaf and a partition");
     const std::string newton_path = "proof.cases[0]";
     const Json& newton = cases[0];
     if (context.string_at(newton, "kind", newton_path) != "newton") context.malformed(newton_path + ".kind", "expected newton");
@@ -89,7 +91,8 @@ void check_o1(Context& context, const Json& proof, const Json& data, const Real&
                         }};
     if (context.string_at(proof, "kind", "proof") != "all") context.malformed("proof.kind", "expected \"all\"");
     const Json& cases = context.member(proof, "cases", "proof");
-    if (!cases.is_array() || cases.size() != 1) context.malformed("proof.cases", "expected one partition");
+    if (!cases.is_array()) context.malformed("proof.cases", "expected an array");
+    context.require(cases.size() == 1, "proof.cases", "expected one case: the partition");
     const std::string path = "proof.cases[0]";
     std::vector<Box> roots;
     const Box covered = check_partition(context, cases[0], path, [&](const Json& leaf, const Box& piece, const std::string& at) {

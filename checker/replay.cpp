@@ -158,7 +158,8 @@ Box check_partition(Context& context, const Json& node, const std::string& path,
         return box;
     }
     const Json& cases = context.member(node, "cases", path);
-    if (!cases.is_array() || cases.size() != 2) context.malformed(path + ".cases", "a split has exactly two cases");
+    if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
+    context.require(cases.size() == 2, path + ".cases", "a split needs both of its cases");
     const Json& dimension_json = context.member(node, "dimension", path);
     if (!dimension_json.is_number_unsigned() || dimension_json.get<std::size_t>() >= box.size())
         context.malformed(path + ".dimension", "not a dimension of the box");
