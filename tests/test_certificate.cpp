@@ -187,6 +187,11 @@ TEST_CASE("verify on the command line: exit 0, 1 naming the step, 2 unreadable")
     std::ofstream(junk) << "{ not json";
     CHECK(status("verify " + junk) == 2);
     CHECK(status("verify " + folder + "/missing.json") == 2);
+    // Only proofs are certified: no certificate for a certified impossibility.
+    const std::string none = folder + "/none.json";
+    CHECK(status("density --family O1 --p 1 --certificate " + none) == 3);
+    CHECK(!std::filesystem::exists(none));
+    CHECK(status("density --family C0 --p 2 --certificate /proc/no/such/dir/c.json") == 2);
     std::filesystem::remove_all(folder);
 }
 

@@ -48,8 +48,14 @@ int run(const DensityOptions& options) {
         } else {
             print_table(lattice, options.p, field.backend());
         }
-        if (!options.certificate.empty() && lattice.status == FamilyStatus::certified)
-            write_certificate(options.certificate, family_certificate(lattice, p, field, digits));
+        if (!options.certificate.empty() && lattice.status == FamilyStatus::certified) {
+            const Json certificate = family_certificate(lattice, p, field, digits);
+            try {
+                write_certificate(options.certificate, certificate);
+            } catch (const std::runtime_error& error) {
+                throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+            }
+        }
         if (lattice.status == FamilyStatus::no_lattice)
             throw Failure(exit_impossible, std::string(to_string(family)) + ": " + lattice.message);
         if (lattice.status == FamilyStatus::undecided)
