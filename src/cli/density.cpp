@@ -1,15 +1,16 @@
-// superpack density --family F --p P [--digits D] [--json]
+// superpack density --family F --p P [--digits D] [--json] [--certificate FILE]
 #include <memory>
 
 #include "common.hpp"
 #include "superpack/decimal.hpp"
+#include "superpack/family_certificate.hpp"
 
 namespace superpack::cli {
 
 namespace {
 
 struct DensityOptions {
-    std::string family, p, digits;
+    std::string family, p, digits, certificate;
     bool json = false;
 };
 
@@ -34,6 +35,7 @@ void print_table(const FamilyLattice<I>& lattice, const std::string& p, const ch
 int run(const DensityOptions& options) {
     const Family family = parse_family(options.family);
     const Rational p = parse_p(options.p);
+    if (!options.certificate.empty()) require_rounding_self_test();
     return with_field(options.digits, [&](const auto& field, long digits) {
         const auto lattice = enclose_family(family, p, field);
         if (options.json) {
@@ -45,6 +47,14 @@ int run(const DensityOptions& options) {
             std::cout << document.dump(2) << "\n";
         } else {
             print_table(lattice, options.p, field.backend());
+        }
+        if (!options.certificate.empty() && lattice.status == FamilyStatus::certified) {
+            const Json certificate = family_certificate(lattice, p, field, digits);
+            try {
+                write_certificate(options.certificate, certificate);
+            } catch (const std::runtime_error& error) {
+                throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+            }
         }
         if (lattice.status == FamilyStatus::no_lattice)
             throw Failure(exit_impossible, std::string(to_string(family)) + ": " + lattice.message);
@@ -62,6 +72,8 @@ void add_density(CLI::App& app) {
     command->add_option("--family", options->family, "C0, C1 (p >= 1), O0 (1/2 < p <= 1) or O1 (p >= 1/2)")->required();
     command->add_option("--p", options->p, "deformation parameter: a decimal (1.15) or a fraction (23/20)")->required();
     command->add_option("--digits", options->digits, "significant digits (Arb balls); default: binary64 intervals");
+    command->add_option("--certificate", options->certificate,
+                        "write a certificate of the density (replay it with `superpack verify FILE`)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
 }

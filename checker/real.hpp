@@ -1,0 +1,76 @@
+// The checker's own arithmetic: closed intervals [lo, hi] with MPFR endpoints (MPFI), at a
+// precision fixed per certificate. This file and its siblings include nothing from
+// superpack's include/ (no interval.hpp, families.hpp, roots.hpp): the checker shares only
+// JSON parsing with the producer, so a bug in the producer's arithmetic cannot hide itself.
+#pragma once
+#include <gmpxx.h>
+#include <mpfi.h>
+
+#include <string>
+#include <vector>
+
+namespace superpack_checker {
+
+class Real {
+public:
+    explicit Real(mpfr_prec_t precision);  // the point 0
+    Real(const Real& other);
+    Real(Real&& other) noexcept;
+    Real& operator=(const Real& other);
+    Real& operator=(Real&& other) noexcept;
+    ~Real();
+
+    mpfi_ptr get() { return value_; }
+    mpfi_srcptr get() const { return value_; }
+    mpfr_prec_t precision() const { return precision_; }
+    mpfr_srcptr lo() const { return &value_->left; }
+    mpfr_srcptr hi() const { return &value_->right; }
+
+private:
+    mpfi_t value_;
+    mpfr_prec_t precision_;
+};
+
+Real integer(long n, mpfr_prec_t precision);
+Real rational(const mpq_class& q, mpfr_prec_t precision);  // outward rounded
+// Exactly [lo, hi]; false (and nothing set) when an end needs more than `precision` bits.
+bool exact_interval(Real& result, mpfr_srcptr lo, mpfr_srcptr hi);
+
+Real operator+(const Real& a, const Real& b);
+Real operator-(const Real& a, const Real& b);
+Real operator*(const Real& a, const Real& b);
+Real operator/(const Real& a, const Real& b);  // b must exclude 0 (else the result is unbounded)
+Real operator-(const Real& a);
+Real operator*(long n, const Real& a);
+
+Real exp(const Real& x);
+Real log(const Real& x);  // x > 0
+Real abs(const Real& x);
+// |x|^y for a nonnegative exponent y (the point 0 gives 1): endpoint-wise, as x -> |x|^y is
+// monotone on each side of 0.
+Real pow_abs(const Real& x, const Real& y);
+// sign(x) |x|^y, the derivative kernel of |x|^(y+1); [-M, M] when x may change sign.
+Real pow_signed(const Real& x, const Real& y);
+// Gamma on x > 0 from MPFR's correctly rounded mpfr_gamma and mpfr_digamma at the endpoints:
+// monotone where digamma has one sign, else a mean-value lower bound around the minimum.
+Real gamma(const Real& x);
+
+Real hull(const Real& a, const Real& b);
+Real lower_point(const Real& x);
+Real upper_point(const Real& x);
+Real midpoint(const Real& x);  // a point of x
+bool intersect(Real& result, const Real& a, const Real& b);  // false when a and b are disjoint
+
+// Certainly-predicates (true only when proved for every point).
+bool positive(const Real& x);
+bool negative(const Real& x);
+bool excludes_zero(const Real& x);
+bool less(const Real& a, const Real& b);
+bool subset(const Real& inner, const Real& outer);           // inner within outer
+bool interior_subset(const Real& inner, const Real& outer);  // inner within the interior of outer
+double width(const Real& x);  // for stopping rules only, rounded up
+double middle(const Real& x);  // for preconditioners only
+
+std::string text(const Real& x);  // "[lo, hi]" to 20 digits, for messages
+
+}  // namespace superpack_checker

@@ -1,0 +1,75 @@
+// `superpack verify`: replays a certificate with the checker's own arithmetic.
+//
+// A claim kind is checked by one function registered under its name (ClaimKindRegistration
+// in a file checker/claim_<kind>.cpp); the verifier checks the head of the file, then
+// dispatches on claim.kind. Every check names its place in the document (a path such as
+// proof.cases[1].cases[0]) so that a rejection says which step failed.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "checker/real.hpp"
+
+namespace superpack_checker {
+
+using Json = nlohmann::json;
+
+enum class Verdict { valid, invalid, malformed };
+const char* to_string(Verdict verdict);
+
+struct VerifyReport {
+    Verdict verdict = Verdict::malformed;
+    std::string path;     // the first failing step (empty when valid)
+    std::string message;  // why it failed
+    std::string claim_kind, claim_text;
+    long steps = 0;       // checks performed
+    mpfr_prec_t precision = 0;
+};
+
+VerifyReport verify_document(const Json& document);
+VerifyReport verify_file(const std::string& path);  // unreadable or unparsable: malformed
+
+// Thrown inside a claim checker; the verifier turns it into the report.
+struct Rejection {
+    Verdict verdict;
+    std::string path, message;
+};
+
+// What a claim checker gets: the precision, readers that validate as they read, and the
+// step counter.
+class Context {
+public:
+    Context(const Json& document, mpfr_prec_t precision) : document_(document), precision_(precision) {}
+    const Json& document() const { return document_; }
+    mpfr_prec_t precision() const { return precision_; }
+    long steps() const { return steps_; }
+    void count_step() { ++steps_; }
+    // The step being checked, named in the report if an evaluation leaves its domain.
+    std::string current_step;
+
+    [[noreturn]] void reject(const std::string& path, const std::string& message) const;
+    [[noreturn]] void malformed(const std::string& path, const std::string& message) const;
+    // Checks `condition` as one step; rejects with `message` at `path` when it fails.
+    void require(bool condition, const std::string& path, const std::string& message);
+
+    const Json& member(const Json& object, const std::string& key, const std::string& path) const;
+    std::string string_at(const Json& object, const std::string& key, const std::string& path) const;
+    // {"lo": "m*2^e", "hi": "m*2^e"}, read exactly; lo > hi is a rejection (an empty set).
+    Real interval(const Json& node, const std::string& path);
+    std::vector<Real> box(const Json& node, const std::string& path);
+    mpq_class rational_at(const Json& object, const std::string& key, const std::string& path) const;
+
+private:
+    const Json& document_;
+    mpfr_prec_t precision_;
+    long steps_ = 0;
+};
+
+using ClaimChecker = void (*)(const Json& claim, Context& context);
+struct ClaimKindRegistration {
+    ClaimKindRegistration(const char* kind, ClaimChecker checker);
+};
+std::vector<std::string> registered_claim_kinds();
+
+}  // namespace superpack_checker

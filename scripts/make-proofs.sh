@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Regenerates the certificates in proofs/ with the superpack built in BUILD_DIR, and replays
+# each with `superpack verify` before keeping it. `make proofs` calls this; `make test`
+# replays every proofs/*.json (tests/test_proofs.cpp).
+#
+# Usage: scripts/make-proofs.sh BUILD_DIR
+set -euo pipefail
+build=${1:?usage: scripts/make-proofs.sh BUILD_DIR}
+root=$(cd "$(dirname "$0")/.." && pwd)
+superpack=$(cd "$build" && pwd)/superpack
+mkdir -p "$root/proofs"
+
+# density FAMILY P NAME [DIGITS]: the family-lattice certificate of one family at one p.
+density() {
+    local family=$1 p=$2 name=$3 digits=${4:-}
+    local file="$root/proofs/$name.json"
+    local arguments=(density --family "$family" --p "$p" --certificate "$file")
+    if [ -n "$digits" ]; then arguments+=(--digits "$digits"); fi
+    "$superpack" "${arguments[@]}" >/dev/null
+    "$superpack" verify "$file" >/dev/null
+    echo "proofs/$name.json"
+}
+
+# The densities of the four families at one p each in their domains (binary64 intervals),
+# Minkowski's octahedron lattice (O1 at p = 1/2, phi = 18/19), and two at 30 digits (Arb).
+density C0 3/2 density-C0-p1.5
+density C1 3 density-C1-p3
+density O0 0.85 density-O0-p0.85
+density O1 0.6 density-O1-p0.6
+density O1 1/2 density-O1-p0.5-minkowski
+density C0 3/2 density-C0-p1.5-30digits 30
+density O1 1/2 density-O1-p0.5-minkowski-30digits 30
