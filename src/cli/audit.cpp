@@ -12,7 +12,7 @@ namespace superpack::cli {
 namespace {
 
 struct AuditOptions {
-    std::string family, p_range, output_directory = "proofs";
+    std::string family, p_range, output_directory = "out";
     bool second_root = false, json = false;
     int pieces = 0, depth = -1;  // 0 / -1: the family's default
 };
@@ -91,7 +91,7 @@ void add_audit(CLI::App& app) {
     command->add_flag("--second-root", options->second_root, "O1: audit the lattice of the other real root of Eq. (12)");
     command->add_option("--pieces", options->pieces, "initial pieces per range (default 16; O1: 300)");
     command->add_option("--depth", options->depth, "bisections of an undecided piece (default 12; O1: 3)");
-    command->add_option("--output-directory", options->output_directory, "where audit-<family>.json goes (default proofs)");
+    command->add_option("--output-directory", options->output_directory, "where audit-<family>.json goes (default out)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
 }

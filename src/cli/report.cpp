@@ -6,6 +6,7 @@
 #include "common.hpp"
 #include "superpack/atomic_file.hpp"
 #include "superpack/decimal.hpp"
+#include "superpack/lattice.hpp"
 
 namespace superpack::cli {
 
@@ -31,13 +32,13 @@ std::vector<std::string> split(const std::string& text, char separator) {
     return parts;
 }
 
-// The family whose phi is certainly above every other's, or those that cannot be separated
-// from the best (joined by '='), or "none".
+// Among the lattices certified to be packings: the family whose phi is certainly above every
+// other's, or those that cannot be separated from the best (joined by '='), or "none".
 template <class I>
-std::string densest(const std::vector<FamilyLattice<I>>& lattices) {
+std::string densest(const std::vector<FamilyLattice<I>>& lattices, const std::vector<Verdict>& verdicts) {
     std::vector<const FamilyLattice<I>*> certified;
-    for (const auto& lattice : lattices)
-        if (lattice.phi) certified.push_back(&lattice);
+    for (std::size_t k = 0; k < lattices.size(); ++k)
+        if (lattices[k].phi && verdicts[k] == Verdict::admissible) certified.push_back(&lattices[k]);
     if (certified.empty()) return "none";
     const FamilyLattice<I>* leader = certified.front();
     for (const auto* lattice : certified)
@@ -58,9 +59,9 @@ int run(const ReportOptions& options) {
         Json document = header_json("report", field, digits);
         Json rows = Json::array();
         if (!options.json) {
-            std::cout << "Certified packing densities phi of the JST 2009 lattice families (" << field.backend() << ")\n";
+            std::cout << "Certified densities phi = V_sb / |det| of the JST 2009 lattice families (" << field.backend() << ")\n";
             std::cout << std::left << std::setw(6) << "p";
-            for (Family family : all_families()) std::cout << std::setw(30) << to_string(family);
+            for (Family family : all_families()) std::cout << std::setw(31) << to_string(family);
             std::cout << "densest\n";
         }
         const auto values = split(options.p_values, ',');
@@ -68,6 +69,7 @@ int run(const ReportOptions& options) {
             const Rational p = parse_p(values[index]);
             std::cerr << "report: p = " << values[index] << " (" << index + 1 << "/" << values.size() << ")\n";
             std::vector<FamilyLattice<I>> lattices;
+            std::vector<Verdict> verdicts;
             Json row{{"p", values[index]}, {"families", Json::object()}};
             if (!options.json) std::cout << std::setw(6) << values[index];
             for (Family family : all_families()) {
@@ -75,10 +77,15 @@ int run(const ReportOptions& options) {
                 try {
                     lattices.push_back(enclose_family(family, p, field));
                     const auto& lattice = lattices.back();
-                    row["families"][to_string(family)] = family_json(lattice);
+                    const LatticeCheck<I> check = check_family_lattice(lattice, field.rational(p));
+                    verdicts.push_back(check.verdict);
+                    Json family_row = family_json(lattice);
+                    family_row["packing"] = lattice_check_json(check, false);
+                    row["families"][to_string(family)] = family_row;
                     if (lattice.phi) {
                         const DecimalEnclosure text = to_fixed(*lattice.phi, 10);
-                        cell = "[" + text.lo + ", " + text.hi + "]";
+                        const char* mark = check.verdict == Verdict::admissible ? " " : check.verdict == Verdict::overlapping ? "x" : "?";
+                        cell = "[" + text.lo + ", " + text.hi + "]" + mark;
                     } else {
                         cell = lattice.status == FamilyStatus::no_lattice ? "-  (no lattice)" : "?  (undecided)";
                     }
@@ -86,9 +93,9 @@ int run(const ReportOptions& options) {
                     row["families"][to_string(family)] = Json{{"status", "outside_domain"},
                                                               {"domain", family_domain_text(family)}};
                 }
-                if (!options.json) std::cout << std::setw(30) << cell;
+                if (!options.json) std::cout << std::setw(31) << cell;
             }
-            row["densest"] = densest(lattices);
+            row["densest"] = densest(lattices, verdicts);
             if (!options.json) std::cout << row["densest"].template get<std::string>() << "\n";
             rows.push_back(row);
         }
@@ -98,7 +105,9 @@ int run(const ReportOptions& options) {
         if (options.json)
             std::cout << text;
         else
-            std::cout << "phi enclosures [lo, hi] to 10 decimals, lo rounded down and hi up;\n"
+            std::cout << "phi enclosures [lo, hi] to 10 decimals, lo rounded down and hi up. After the\n"
+                      << "enclosure: ' ' a certified packing, 'x' certified to overlap (not a packing: its phi is\n"
+                      << "no packing density), '?' undecided. 'densest' ranks certified packings only.\n"
                       << "full enclosures and root proofs: " << options.output << "\n";
         return exit_ok;
     });
