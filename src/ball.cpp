@@ -134,6 +134,13 @@ Ball abs(const Ball& x) {
     arb_clear(magnitude);
     return result;
 }
+Ball power_of_positive(const Ball& x, const Ball& y) {
+    Ball result(std::max(x.precision(), y.precision()));
+    arb_log(result.get(), x.get(), result.precision());
+    arb_mul(result.get(), result.get(), y.get(), result.precision());
+    arb_exp(result.get(), result.get(), result.precision());
+    return result;
+}
 Ball gamma(const Ball& x) { return unary(x, detail::enclose_gamma); }
 Ball digamma(const Ball& x) { return unary(x, detail::enclose_digamma); }
 

@@ -68,13 +68,16 @@ FamilyLattice<I> enclose_cubic(Family family, const I& p) {
     const auto field = field_of(p);
     const double p_guess = mid_double(p);
     const double s_guess = guess_root([&](const auto& s) { return cubic_equation(family, s, p_guess); }, 0.2);
-    auto equation = [&](const auto& s) { return cubic_equation(family, s, p); };
+    const CubicConstants<I> constants = cubic_constants(p);
+    auto equation = [&](const auto& s) { return cubic_equation(family, s, constants); };
     const double spread = std::max(width_upper(p), 1e-12);
-    for (double radius = 1e-10 + 4 * spread; radius < 0.5; radius *= 64) {
+    for (double radius = 1e-11 + 4 * spread; radius < 0.5; radius *= 64) {
         // The lower end is cut to 24 significant bits so that a ball backend (30-bit radius)
         // holds [0, lower end] exactly: the root-free piece below must not reach the root.
+        // It also sits at least 2^-20 s below the guess: a ball holding [0, lower end] + t
+        // rounds its radius by 2^-30 of its width, which must not reach the root.
         int exponent = 0;
-        const double mantissa = std::frexp(std::max(0.0, s_guess - radius), &exponent);
+        const double mantissa = std::frexp(std::max(0.0, std::min(s_guess - radius, s_guess * (1 - 0x1p-20))), &exponent);
         const double lower_end = std::ldexp(std::floor(std::ldexp(mantissa, 24)), exponent - 24);
         const I box = from_doubles(field.integer(0), lower_end, s_guess + radius);
         NewtonResult<I> newton = newton_isolate(equation, box, 0.0, 200);

@@ -17,11 +17,14 @@ constexpr slong kArbBits = 64;
 // directed mode between operations. Set nearest for the call, restore after.
 class NearestRounding {
 public:
-    NearestRounding() : saved_(std::fegetround()) { std::fesetround(FE_TONEAREST); }
-    ~NearestRounding() { std::fesetround(saved_); }
+    NearestRounding() {
+        detail::sse_rounding_control::get_rounding_mode(saved_);
+        detail::sse_rounding_control::to_nearest();
+    }
+    ~NearestRounding() { detail::sse_rounding_control::set_rounding_mode(saved_); }
 
 private:
-    int saved_;
+    detail::sse_rounding_control::rounding_mode saved_;
 };
 
 void to_arb(arb_t result, const DInterval& x) {
@@ -75,6 +78,22 @@ double arb_exp_up(double x) { return point_through_arb(x, arb_exp, true); }
 double arb_log_down(double x) { return point_through_arb(x, arb_log, false); }
 double arb_log_up(double x) { return point_through_arb(x, arb_log, true); }
 }  // namespace detail
+
+DInterval power_of_positive(const DInterval& x, const DInterval& y) {
+    NearestRounding nearest;
+    arb_t base, exponent;
+    arb_init(base);
+    arb_init(exponent);
+    to_arb(base, x);
+    to_arb(exponent, y);
+    arb_log(base, base, kArbBits);
+    arb_mul(base, base, exponent, kArbBits);
+    arb_exp(base, base, kArbBits);
+    DInterval result = from_arb(base);
+    arb_clear(base);
+    arb_clear(exponent);
+    return result;
+}
 
 DInterval DoubleField::rational(const Rational& q) const {
     mpfr_t bound;
@@ -132,10 +151,11 @@ bool interior_contains(const DInterval& outer, const DInterval& inner) {
 
 double mid_double(const DInterval& x) { return boost::numeric::median(x); }
 double width_upper(const DInterval& x) {
-    const int saved = std::fegetround();
-    std::fesetround(FE_UPWARD);
-    const volatile double width = x.upper() - x.lower();
-    std::fesetround(saved);
+    detail::rounded_arith_opaque rounding;
+    detail::sse_rounding_control::rounding_mode saved;
+    rounding.get_rounding_mode(saved);
+    const double width = rounding.sub_up(x.upper(), x.lower());
+    rounding.set_rounding_mode(saved);
     return width;
 }
 DInterval from_doubles(const DInterval&, double lo, double hi) { return DInterval(lo, hi); }

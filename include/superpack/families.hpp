@@ -34,18 +34,38 @@ P cubic_shift(const P& p) {
     return exp(-log(field.integer(2)) / (field.integer(2) * p));
 }
 
+// The quantities of the C0/C1 equations that depend on p only, computed once per p so that
+// Newton's many evaluations in s do not repeat them.
+template <class P>
+struct CubicConstants {
+    P two_p;   // 2p
+    P shift;   // t = 2^(-1/(2p))
+    P corner;  // 2^(-2p)
+};
+
+template <class P>
+CubicConstants<P> cubic_constants(const P& p) {
+    const auto field = scalar_field(p);
+    const P two_p = field.integer(2) * p;
+    return {two_p, cubic_shift(p), exp(-two_p * log(field.integer(2)))};
+}
+
 // C0 (Eq. 2): (s + t)^(2p) + s^(2p) + 2^(-2p) - 1 = 0, s the smallest positive root.
 // C1 (Eq. 9): (s + t)^(2p) + 2 s^(2p) - 1 = 0.
 template <class S, class P>
-auto cubic_equation(Family family, const S& s, const P& p) {
-    const auto field = scalar_field(p);
-    const auto two_p = field.integer(2) * p;
+auto cubic_equation(Family family, const S& s, const CubicConstants<P>& c) {
+    const auto field = scalar_field(c.two_p);
     // |s| rather than s: identical for s >= 0, and a box [0, b] made by a ball backend may
     // reach a rounding error below 0 (then the root-free claim covers a slightly larger set).
-    const auto shifted = pow_abs(s + cubic_shift(p), two_p);
-    const auto own = pow_abs(s, two_p);
-    if (family == Family::C0) return shifted + own + exp(-two_p * log(field.integer(2))) - field.integer(1);
+    const auto shifted = pow_abs(s + c.shift, c.two_p);
+    const auto own = pow_abs(s, c.two_p);
+    if (family == Family::C0) return shifted + own + c.corner - field.integer(1);
     return shifted + field.integer(2) * own - field.integer(1);
+}
+
+template <class S, class P>
+auto cubic_equation(Family family, const S& s, const P& p) {
+    return cubic_equation(family, s, cubic_constants(p));
 }
 
 // Bases (rows e1, e2, e3) of Eqs. 1, 8, 5, 11.

@@ -121,10 +121,16 @@ inline double pow_signed(double x, double y) { return std::copysign(std::pow(std
 // x -> x^y is monotone, so the hull of the two endpoint enclosures holds every value.
 // At x = 0 the lower value is 0 when y > 0 and 1 when y = 0 exactly (the limit used by
 // derivatives at p = 1/2); a possibly non-positive y with x touching 0 is a contract error.
+// x^y for a positive x, as one ball evaluation of exp(y log x) (Arb): tight when x is narrow,
+// and one library call instead of four, which is most of a density's cost.
+DInterval power_of_positive(const DInterval& x, const DInterval& y);
+Ball power_of_positive(const Ball& x, const Ball& y);
+
 template <class I>
 I pow_nonneg(const I& x, const I& y) {
     const auto field = field_of(x);
     if (!certainly_nonnegative(x)) throw std::domain_error("pow_nonneg: base may be negative");
+    if (certainly_positive(x) && width_upper(x) <= std::ldexp(mid_double(x), -20)) return power_of_positive(x, y);
     const I a = lower_point(x), b = upper_point(x);
     auto endpoint = [&](const I& base) -> I {
         if (certainly_positive(base)) return exp(y * log(base));
