@@ -130,7 +130,7 @@ template <class I>
 I pow_nonneg(const I& x, const I& y) {
     const auto field = field_of(x);
     if (!certainly_nonnegative(x)) throw std::domain_error("pow_nonneg: base may be negative");
-    if (certainly_positive(x) && width_upper(x) <= std::ldexp(mid_double(x), -20)) return power_of_positive(x, y);
+    if (certainly_positive(x) && width_upper(x) <= std::ldexp(mid_double(x), -16)) return power_of_positive(x, y);
     const I a = lower_point(x), b = upper_point(x);
     auto endpoint = [&](const I& base) -> I {
         if (certainly_positive(base)) return exp(y * log(base));
