@@ -13,18 +13,11 @@ import json
 
 import mpmath
 
-from mpmath import mp, mpf, beta, diff, digamma, findroot, log, pi, sqrt
+from mpmath import mp, mpf, diff, digamma, findroot, log, pi, sqrt
+
+from make_golden import text, volume  # the paper's Beta form, and 50-digit printing
 
 mp.dps = 60
-DIGITS = 50
-
-
-def text(x):
-    return mp.nstr(x, DIGITS, strip_zeros=False)
-
-
-def volume(p):
-    return 2 / p**2 * beta(1 / (2 * p), (2 * p + 1) / (2 * p)) * beta(1 / (2 * p), (p + 1) / p)
 
 
 def phi_c0(p):
