@@ -91,7 +91,6 @@ P octahedral_height(const P& p) {
 
 template <class T>
 Basis<T> o0_basis(const T& p) {
-    const auto field = scalar_field(p);
     const T zero = constant_like(p, 0), one = constant_like(p, 1), two = constant_like(p, 2);
     return Basis<T>{{{two, zero, zero}, {zero, two, zero}, {one, one, two * octahedral_height(p)}}};
 }
