@@ -1,5 +1,5 @@
 // Binary64 intervals: Boost.Interval with hardware directed rounding for + - * / sqrt, and
-// transcendental bounds taken from Arb, because Boost's rounded_transc_std trusts glibc's
+// transcendental bounds taken from Arb, because Boost's libm-backed transcendental policy trusts glibc's
 // libm to honour the rounding mode, which it does not.
 #pragma once
 #include <boost/numeric/interval.hpp>
