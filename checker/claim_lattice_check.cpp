@@ -133,6 +133,7 @@ void check_lattice_check(const Json& claim, Context& context) {
     if (!cross_norms.is_array() || cross_norms.size() != 3) context.malformed("proof.bound_data.cross_norms", "expected three intervals");
     const Triple stated_bound = read_triple(context, context.member(proof, "coefficient_bound", "proof"), "proof.coefficient_bound");
     Triple bound;
+    long boxes = 1;  // triples in the checker's box (at most 2001^3: no overflow)
     for (int i = 0; i < 3; ++i) {
         const Vector normal = cross(basis[(i + 1) % 3], basis[(i + 2) % 3]);
         const mpq_class l1 = abs(normal[0]) + abs(normal[1]) + abs(normal[2]);
@@ -143,10 +144,13 @@ void check_lattice_check(const Json& claim, Context& context) {
         mpz_fdiv_q(n.get_mpz_t(), limit.get_num_mpz_t(), limit.get_den_mpz_t());
         context.require(n <= 1000, "proof.coefficient_bound", "the coefficient box is too large to enumerate");
         bound[i] = n.get_si();
+        boxes *= 2 * bound[i] + 1;
         context.require(stated_bound[i] >= bound[i], "proof.coefficient_bound",
                         "the stated bound " + std::to_string(stated_bound[i]) + " on coefficient " + std::to_string(i) +
                             " is below the checker's floor(2 ||e_j x e_k||_1 / |det|) = " + std::to_string(bound[i]));
     }
+
+    context.require(boxes <= 20000000, "proof.coefficient_bound", "the coefficient box is too large to enumerate");
 
     // The listed candidates, by triple.
     const Json& candidates = context.member(proof, "candidates", "proof");
@@ -187,15 +191,19 @@ void check_lattice_check(const Json& claim, Context& context) {
                                                         " < 2: the lattice is not a packing");
                 } else if (less(two, norm)) {
                     status = "above";
-                } else {
-                    context.require(norm_is_exactly_two(v, two_p_exact), path,
-                                    "the norm enclosure " + text(norm) + " of " + triple_text(t) +
-                                        " holds 2 and no exact test proves the norm equal to 2");
+                } else if (norm_is_exactly_two(v, two_p_exact)) {
                     status = "contact";
                     contacts.insert(t);
+                } else {
+                    // Harmless beside a witness; fatal to a packing claim.
+                    context.require(!packing, path, "the norm enclosure " + text(norm) + " of " + triple_text(t) +
+                                                        " holds 2 and no exact test proves the norm equal to 2");
+                    status = "undecided";
                 }
-                context.require(context.string_at(entry, "status", path) == status, path + ".status",
-                                "the stated status differs from the checker's \"" + status + "\"");
+                // The producer's coarser arithmetic may leave undecided what the checker decides.
+                const std::string stated_status = context.string_at(entry, "status", path);
+                context.require(stated_status == status || (!packing && stated_status == "undecided"), path + ".status",
+                                "the stated status \"" + stated_status + "\" differs from the checker's \"" + status + "\"");
             }
 
     context.current_step = "claim.data";

@@ -58,7 +58,11 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
         const bool contact = std::find(check.contact_vectors.begin(), check.contact_vectors.end(), candidate.coefficients) !=
                              check.contact_vectors.end();
         const I two = field.integer(2);
-        const char* status = contact ? "contact" : certainly_less(candidate.norm, two) ? "below" : "above";
+        // "undecided": a near contact, possible only beside a witness (an overlapping verdict).
+        const char* status = contact                               ? "contact"
+                             : certainly_less(candidate.norm, two) ? "below"
+                             : certainly_less(two, candidate.norm) ? "above"
+                                                                   : "undecided";
         candidates.push_back(Json{{"coefficients", coefficients_json(candidate.coefficients)},
                                   {"norm", exact_interval_json(candidate.norm)},
                                   {"status", status}});

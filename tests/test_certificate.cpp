@@ -322,6 +322,13 @@ TEST_CASE("lattice-check: a lowered coefficient bound, a deleted candidate, a ch
     report = verify_document(claimed_packing);
     CHECK(report.verdict == Verdict::invalid);
     CHECK(report.path.rfind("proof.candidates[", 0) == 0);
+    // A near contact in binary64 beside a witness: the producer marks it undecided, the checker
+    // (128 bits) separates it from 2 and accepts the overlap.
+    const Document near = lattice_certificate("2", "3.9,2,0; -2,-2,0; 0,0,2.0000000000000001");
+    bool undecided = false;
+    for (const auto& candidate : near["proof"]["candidates"]) undecided = undecided || candidate["status"] == "undecided";
+    CHECK(undecided);
+    CHECK(verify_document(near).verdict == Verdict::valid);
     Document other_witness = overlapping;
     other_witness["claim"]["data"]["witness"]["coefficients"] = Document::array({0, 0, 1});
     CHECK(verify_document(other_witness).verdict == Verdict::invalid);
