@@ -30,3 +30,20 @@ density O1 0.6 density-O1-p0.6
 density O1 1/2 density-O1-p0.5-minkowski
 density C0 3/2 density-C0-p1.5-30digits 30
 density O1 1/2 density-O1-p0.5-minkowski-30digits 30
+
+# lattice P BASIS NAME: the lattice-check certificate of an exact basis at an exact p.
+lattice() {
+    local p=$1 basis=$2 name=$3
+    local file="$root/proofs/$name.json"
+    local status=0
+    "$superpack" check-lattice --p "$p" --basis "$basis" --certificate "$file" >/dev/null || status=$?
+    if [ "$status" -ne 0 ]; then echo "check-lattice failed ($status) for $name" >&2; exit "$status"; fi
+    "$superpack" verify "$file" >/dev/null
+    echo "proofs/$name.json"
+}
+
+# Minkowski's octahedron lattice at p = 1/2 (a packing, 14 contacts), 2Z^3 at p = 3 (a packing,
+# 6 contacts), and an overlapping basis at p = 2 (witness e1 + e2 = (1.9, 0, 0), norm 1.9).
+lattice 1/2 "2/3,2/3,-2/3; -1/3,4/3,-1/3; 1/3,-1/3,-4/3" lattice-minkowski-p0.5
+lattice 3 "2,0,0; 0,2,0; 0,0,2" lattice-2Z3-p3
+lattice 2 "3.9,2,0; -2,-2,0; 0,0,2" lattice-overlapping-p2

@@ -8,6 +8,7 @@
 #include "checker/verifier.hpp"
 #include "superpack/certificate.hpp"
 #include "superpack/family_certificate.hpp"
+#include "superpack/lattice_certificate.hpp"
 #include "support.hpp"
 
 namespace {
@@ -21,6 +22,17 @@ Document certificate(superpack::Family family, const std::string& p) {
     const auto lattice = superpack::enclose_family(family, exact, superpack::DoubleField{});
     return Document::parse(superpack::family_certificate(lattice, exact, superpack::DoubleField{}, 15).dump());
 }
+
+// The lattice-check certificate of an exact basis at an exact p (binary64 intervals).
+Document lattice_certificate(const std::string& p, const std::string& basis) {
+    const superpack::Rational exact = superpack::parse_rational(p);
+    const superpack::Basis<superpack::Rational> rows = superpack::parse_basis(basis);
+    const auto check = superpack::check_exact_lattice(rows, exact, superpack::DoubleField{});
+    return Document::parse(superpack::lattice_certificate(check, rows, exact, superpack::DoubleField{}, 15).dump());
+}
+
+const char* const minkowski_basis = "2/3,2/3,-2/3; -1/3,4/3,-1/3; 1/3,-1/3,-4/3";
+const char* const overlapping_basis = "3.9,2,0; -2,-2,0; 0,0,2";
 
 // Every {"lo", "hi"} string in the claim's data and in the proof, as JSON pointers.
 void collect_bounds(const Document& node, const std::string& pointer, std::vector<std::string>& bounds) {
@@ -208,4 +220,138 @@ TEST_CASE("the checker shares no evaluation code with the producer") {
         ++files;
     }
     CHECK(files >= 6);
+}
+
+TEST_CASE("lattice-check certificates: the three of proofs/ are valid and say what they claim") {
+    const Document minkowski = lattice_certificate("1/2", minkowski_basis);
+    CHECK(minkowski["claim"]["kind"] == "lattice-check");
+    CHECK(minkowski["claim"]["data"]["packing"] == true);
+    CHECK(minkowski["claim"]["data"]["contacts"] == 14);
+    CHECK(verify_document(minkowski).verdict == Verdict::valid);
+    const Document cubic = lattice_certificate("3", "2,0,0; 0,2,0; 0,0,2");
+    CHECK(cubic["claim"]["data"]["contacts"] == 6);
+    CHECK(verify_document(cubic).verdict == Verdict::valid);
+    // 2p = 3/2 is not an integer: the contacts (2,0,0) are decided by the equal-coordinates test.
+    CHECK(verify_document(lattice_certificate("3/4", "2,0,0; 0,2,0; 0,0,2")).verdict == Verdict::valid);
+    const Document overlapping = lattice_certificate("2", overlapping_basis);
+    CHECK(overlapping["claim"]["data"]["packing"] == false);
+    CHECK(overlapping["claim"]["data"]["witness"]["coefficients"] == Document::array({1, 1, 0}));
+    CHECK(verify_document(overlapping).verdict == Verdict::valid);
+}
+
+TEST_CASE("lattice-check: changing a digit of any bound is rejected, naming a step") {
+    long tampered = 0;
+    for (const auto& [p, basis] : {std::pair{"1/2", minkowski_basis}, {"2", overlapping_basis}}) {
+        const Document original = lattice_certificate(p, basis);
+        std::vector<std::string> bounds;
+        collect_bounds(original["claim"], "/claim", bounds);
+        collect_bounds(original["proof"], "/proof", bounds);
+        REQUIRE(bounds.size() > 10);
+        for (const std::string& bound : bounds) {
+            Document copy = original;
+            const Document::json_pointer pointer(bound);
+            const std::string before = copy[pointer].get<std::string>();
+            copy[pointer] = tamper_inward(before, bound.substr(bound.size() - 2) == "lo");
+            const auto report = verify_document(copy);
+            INFO(bound << ": " << before << " -> " << copy[pointer]);
+            CHECK(report.verdict == Verdict::invalid);
+            CHECK(!report.path.empty());
+            ++tampered;
+        }
+    }
+    std::cout << "tamper (lattice-check): " << tampered << " single-digit changes of bounds, every one rejected\n";
+}
+
+TEST_CASE("lattice-check: a lowered coefficient bound, a deleted candidate, a changed p or basis entry is rejected") {
+    const Document original = lattice_certificate("1/2", minkowski_basis);
+    REQUIRE(original["proof"]["coefficient_bound"] == Document::array({3, 3, 3}));
+    Document bound = original;
+    bound["proof"]["coefficient_bound"][1] = 2;
+    auto report = verify_document(bound);
+    CHECK(report.verdict == Verdict::invalid);
+    CHECK(report.path == "proof.coefficient_bound");
+
+    for (std::size_t k : {std::size_t{0}, original["proof"]["candidates"].size() / 2}) {
+        Document deleted = original;
+        deleted["proof"]["candidates"].erase(k);
+        report = verify_document(deleted);
+        INFO("candidate " << k);
+        CHECK(report.verdict == Verdict::invalid);
+        CHECK(report.path == "proof.candidates");
+    }
+    // A contact relabelled: the checker decides each status itself.
+    Document relabelled = original;
+    for (auto& candidate : relabelled["proof"]["candidates"])
+        if (candidate["status"] == "contact") {
+            candidate["status"] = "above";
+            break;
+        }
+    CHECK(verify_document(relabelled).verdict == Verdict::invalid);
+
+    Document p_both = original;
+    p_both["inputs"]["p"] = p_both["claim"]["data"]["p"] = "3/5";
+    report = verify_document(p_both);
+    CHECK(report.verdict == Verdict::invalid);
+    CHECK(report.path.rfind("proof.candidates[", 0) == 0);
+    Document p_input = original;
+    p_input["inputs"]["p"] = "3/5";
+    report = verify_document(p_input);
+    CHECK(report.verdict == Verdict::invalid);
+    CHECK(report.path == "inputs.p");
+    Document p_convex = original;
+    p_convex["inputs"]["p"] = p_convex["claim"]["data"]["p"] = "2/5";
+    report = verify_document(p_convex);
+    CHECK(report.verdict == Verdict::invalid);
+    CHECK(report.path == "inputs.p");
+
+    Document entry_both = original;
+    entry_both["inputs"]["basis"][0][0] = entry_both["claim"]["data"]["basis"][0][0] = "3/4";
+    report = verify_document(entry_both);
+    CHECK(report.verdict == Verdict::invalid);
+    CHECK(report.path.rfind("proof.", 0) == 0);
+    Document entry_input = original;
+    entry_input["inputs"]["basis"][2][1] = "-1/2";
+    report = verify_document(entry_input);
+    CHECK(report.verdict == Verdict::invalid);
+    CHECK(report.path == "inputs.basis");
+
+    // Overlap: the witness must be certainly below 2; a packing claim over it is refuted.
+    const Document overlapping = lattice_certificate("2", overlapping_basis);
+    Document claimed_packing = overlapping;
+    claimed_packing["claim"]["data"]["packing"] = true;
+    report = verify_document(claimed_packing);
+    CHECK(report.verdict == Verdict::invalid);
+    CHECK(report.path.rfind("proof.candidates[", 0) == 0);
+    // A near contact in binary64 beside a witness: the producer marks it undecided, the checker
+    // (128 bits) separates it from 2 and accepts the overlap.
+    const Document near = lattice_certificate("2", "3.9,2,0; -2,-2,0; 0,0,2.0000000000000001");
+    bool undecided = false;
+    for (const auto& candidate : near["proof"]["candidates"]) undecided = undecided || candidate["status"] == "undecided";
+    CHECK(undecided);
+    CHECK(verify_document(near).verdict == Verdict::valid);
+    Document other_witness = overlapping;
+    other_witness["claim"]["data"]["witness"]["coefficients"] = Document::array({0, 0, 1});
+    CHECK(verify_document(other_witness).verdict == Verdict::invalid);
+}
+
+TEST_CASE("check-lattice --certificate on the command line") {
+    const std::string folder = std::filesystem::temp_directory_path() / "superpack-test-lattice-certificate";
+    std::filesystem::create_directories(folder);
+    const std::string good = folder + "/good.json", bad = folder + "/bad.json", none = folder + "/none.json";
+    auto status = [&](const std::string& arguments) {
+        const int raw = std::system((std::string(SUPERPACK_BINARY) + " " + arguments + " >/dev/null 2>&1").c_str());
+        return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    };
+    REQUIRE(status("check-lattice --p 3 --basis '2,0,0; 0,2,0; 0,0,2' --certificate " + good) == 0);
+    CHECK(status("verify " + good) == 0);
+    std::ifstream in(good);
+    Document document = Document::parse(in);
+    document["claim"]["data"]["contacts"] = 8;
+    std::ofstream(bad) << document.dump(1);
+    CHECK(status("verify " + bad) == 1);
+    // A near contact in binary64 is undecided: exit 4 and no certificate.
+    CHECK(status("check-lattice --p 1 --basis '2,0,0; 0,2,0; 0,0,2.0000000000000001' --certificate " + none) == 4);
+    CHECK(!std::filesystem::exists(none));
+    CHECK(status("check-lattice --p 1 --family C0 --certificate " + none) == 2);
+    std::filesystem::remove_all(folder);
 }

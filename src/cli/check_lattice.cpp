@@ -1,16 +1,18 @@
 // superpack check-lattice --p P (--basis "a,b,c; d,e,f; g,h,i" | --family F) [--digits D] [--json]
+//                         [--certificate FILE] (exact basis only)
 #include <memory>
 
 #include "common.hpp"
 #include "superpack/decimal.hpp"
 #include "superpack/lattice.hpp"
+#include "superpack/lattice_certificate.hpp"
 
 namespace superpack::cli {
 
 namespace {
 
 struct CheckLatticeOptions {
-    std::string p, basis, family, digits;
+    std::string p, basis, family, digits, certificate;
     bool json = false;
 };
 
@@ -43,7 +45,10 @@ void print_table(const LatticeCheck<I>& check, const std::optional<I>& phi) {
 int run(const CheckLatticeOptions& options) {
     if (options.basis.empty() == options.family.empty())
         throw Failure(exit_usage, "check-lattice: give exactly one of --basis and --family");
+    if (!options.certificate.empty() && options.basis.empty())
+        throw Failure(exit_usage, "check-lattice: --certificate needs --basis (family certificates: superpack density)");
     const Rational p = parse_p(options.p);
+    if (!options.certificate.empty()) require_rounding_self_test();
     return with_field(options.digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
         LatticeCheck<I> check;
@@ -62,6 +67,14 @@ int run(const CheckLatticeOptions& options) {
             check = check_exact_lattice(basis, p, field);
             phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field)));
             document["basis"] = options.basis;
+            if (!options.certificate.empty() && check.verdict != Verdict::undecided) {
+                const Json certificate = lattice_certificate(check, basis, p, field, digits);
+                try {
+                    write_certificate(options.certificate, certificate);
+                } catch (const std::runtime_error& error) {
+                    throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+                }
+            }
         }
         if (options.json) {
             document.update(lattice_check_json(check, false));
@@ -86,6 +99,8 @@ void add_check_lattice(CLI::App& app) {
     command->add_option("--family", options->family, "C0, C1, O0 or O1 (its certified enclosures)");
     command->add_option("--digits", options->digits, "significant digits (Arb balls); default: binary64 intervals");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->add_option("--certificate", options->certificate,
+                        "with --basis: write a certificate of the verdict (replay it with `superpack verify FILE`)");
     command->callback([options] { run(*options); });
 }
 
