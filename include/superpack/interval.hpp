@@ -126,11 +126,18 @@ inline double pow_signed(double x, double y) { return std::copysign(std::pow(std
 DInterval power_of_positive(const DInterval& x, const DInterval& y);
 Ball power_of_positive(const Ball& x, const Ball& y);
 
+// Positive and narrower than 2^-16 of its size: where one ball evaluation is as tight as the
+// endpoint hull (the fast paths of the powers below and in jet.hpp).
+template <class I>
+bool narrow_positive(const I& x) {
+    return certainly_positive(x) && width_upper(x) <= std::ldexp(mid_double(x), -16);
+}
+
 template <class I>
 I pow_nonneg(const I& x, const I& y) {
     const auto field = field_of(x);
     if (!certainly_nonnegative(x)) throw std::domain_error("pow_nonneg: base may be negative");
-    if (certainly_positive(x) && width_upper(x) <= std::ldexp(mid_double(x), -16)) return power_of_positive(x, y);
+    if (narrow_positive(x)) return power_of_positive(x, y);
     const I a = lower_point(x), b = upper_point(x);
     auto endpoint = [&](const I& base) -> I {
         if (certainly_positive(base)) return exp(y * log(base));

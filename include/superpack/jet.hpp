@@ -64,9 +64,6 @@ template <class I> Jet<I> gamma(const Jet<I>& a) {
 // |x|^y with a constant exponent y: d/dx = y sign(x) |x|^(y-1).
 // For a narrow x certainly away from 0, |x|^(y-1) = |x|^y / |x| saves the second power, the
 // dearest operation in Newton's inner loop. (On a wide x the quotient would overestimate.)
-template <class I> bool narrow_positive(const I& x) {
-    return certainly_positive(x) && width_upper(x) <= std::ldexp(mid_double(x), -16);
-}
 template <class I> Jet<I> pow_abs(const Jet<I>& x, const I& y) {
     const I value = pow_abs(x.value, y);
     if (narrow_positive(x.value)) return {value, y * (value / x.value) * x.derivative};
