@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "arb_support.hpp"
+#include "elementary_double.hpp"
 #include "superpack/interval.hpp"
 
 namespace superpack {
@@ -12,20 +13,6 @@ namespace {
 // Arb works at this precision for binary64 endpoints: 11 guard bits, then one outward
 // rounding to double.
 constexpr slong kArbBits = 64;
-
-// Arb's internal double heuristics assume round-to-nearest; Boost leaves the FPU in a
-// directed mode between operations. Set nearest for the call, restore after.
-class NearestRounding {
-public:
-    NearestRounding() {
-        detail::sse_rounding_control::get_rounding_mode(saved_);
-        detail::sse_rounding_control::to_nearest();
-    }
-    ~NearestRounding() { detail::sse_rounding_control::set_rounding_mode(saved_); }
-
-private:
-    detail::sse_rounding_control::rounding_mode saved_;
-};
 
 void to_arb(arb_t result, const DInterval& x) {
     arf_t lo, hi;
@@ -55,7 +42,6 @@ DInterval from_arb(const arb_t x) {
 using ArbFunction = void (*)(arb_t, const arb_t, slong);
 
 DInterval through_arb(const DInterval& x, ArbFunction f) {
-    NearestRounding nearest;
     arb_t value;
     arb_init(value);
     to_arb(value, x);
@@ -65,35 +51,9 @@ DInterval through_arb(const DInterval& x, ArbFunction f) {
     return result;
 }
 
-double point_through_arb(double x, ArbFunction f, bool up) {
-    const DInterval y = through_arb(DInterval(x), f);
-    return up ? y.upper() : y.lower();
-}
-
 }  // namespace
 
-namespace detail {
-double arb_exp_down(double x) { return point_through_arb(x, arb_exp, false); }
-double arb_exp_up(double x) { return point_through_arb(x, arb_exp, true); }
-double arb_log_down(double x) { return point_through_arb(x, arb_log, false); }
-double arb_log_up(double x) { return point_through_arb(x, arb_log, true); }
-}  // namespace detail
-
-DInterval power_of_positive(const DInterval& x, const DInterval& y) {
-    NearestRounding nearest;
-    arb_t base, exponent;
-    arb_init(base);
-    arb_init(exponent);
-    to_arb(base, x);
-    to_arb(exponent, y);
-    arb_log(base, base, kArbBits);
-    arb_mul(base, base, exponent, kArbBits);
-    arb_exp(base, base, kArbBits);
-    DInterval result = from_arb(base);
-    arb_clear(base);
-    arb_clear(exponent);
-    return result;
-}
+DInterval power_of_positive(const DInterval& x, const DInterval& y) { return exp(y * log(x)); }
 
 DInterval DoubleField::rational(const Rational& q) const {
     mpfr_t bound;
@@ -107,7 +67,6 @@ DInterval DoubleField::rational(const Rational& q) const {
 }
 
 DInterval DoubleField::pi() const {
-    NearestRounding nearest;
     arb_t value;
     arb_init(value);
     arb_const_pi(value, kArbBits);
@@ -116,15 +75,17 @@ DInterval DoubleField::pi() const {
     return result;
 }
 
-DInterval exp(const DInterval& x) { return boost::numeric::exp(x); }
-DInterval log(const DInterval& x) {
-    if (!(x.lower() > 0)) throw std::domain_error("log: argument not certainly positive");
-    return boost::numeric::log(x);
-}
+DInterval exp(const DInterval& x) { return detail::enclose_exp(x); }
+DInterval log(const DInterval& x) { return detail::enclose_log(x); }
 DInterval sqrt(const DInterval& x) { return boost::numeric::sqrt(x); }
 DInterval square(const DInterval& x) { return boost::numeric::square(x); }
 DInterval abs(const DInterval& x) { return boost::numeric::abs(x); }
-DInterval gamma(const DInterval& x) { return through_arb(x, detail::enclose_gamma); }
+// A narrow argument in [1/16, 8): the series is as tight as the endpoint hull and needs no
+// library call; anything else goes to Arb's monotonicity-aware evaluation.
+DInterval gamma(const DInterval& x) {
+    if (detail::gamma_series_applies(x)) return detail::enclose_gamma_series(x);
+    return through_arb(x, detail::enclose_gamma);
+}
 DInterval digamma(const DInterval& x) { return through_arb(x, detail::enclose_digamma); }
 
 DInterval lower_point(const DInterval& x) { return DInterval(x.lower()); }
@@ -150,14 +111,7 @@ bool interior_contains(const DInterval& outer, const DInterval& inner) {
 }
 
 double mid_double(const DInterval& x) { return boost::numeric::median(x); }
-double width_upper(const DInterval& x) {
-    detail::rounded_arith_opaque rounding;
-    detail::sse_rounding_control::rounding_mode saved;
-    rounding.get_rounding_mode(saved);
-    const double width = rounding.sub_up(x.upper(), x.lower());
-    rounding.set_rounding_mode(saved);
-    return width;
-}
+double width_upper(const DInterval& x) { return detail::rounded_arith_outward().sub_up(x.upper(), x.lower()); }
 DInterval from_doubles(const DInterval&, double lo, double hi) { return DInterval(lo, hi); }
 
 void get_bounds(mpfr_t lo, mpfr_t hi, const DInterval& x) {

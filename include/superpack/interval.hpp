@@ -1,5 +1,5 @@
 // The interval concept shared by every formula in superpack, and its two backends:
-//   DInterval  binary64 endpoints, hardware directed rounding (fast path, ~15 digits);
+//   DInterval  binary64 endpoints, directed rounding in round-to-nearest (fast path, ~15 digits);
 //   Ball       Arb balls at any precision (selected with --digits).
 // Every formula is a template over the interval type I, so both paths share one source.
 //
@@ -24,7 +24,7 @@ namespace superpack {
 struct DoubleField {
     using Interval = DInterval;
     long bits() const { return 53; }
-    const char* backend() const { return "binary64-interval (Boost.Interval, hardware rounding, Arb for exp/log/gamma)"; }
+    const char* backend() const { return "binary64-interval (Boost.Interval, directed rounding from exact residuals, series exp/log/Gamma with proved bounds)"; }
     DInterval rational(const Rational& q) const;
     DInterval integer(long n) const { return DInterval(static_cast<double>(n)); }
     DInterval pi() const;

@@ -1,88 +1,103 @@
-// Binary64 intervals: Boost.Interval with hardware directed rounding for + - * / sqrt, and
-// transcendental bounds taken from Arb, because Boost's libm-backed transcendental policy trusts glibc's
-// libm to honour the rounding mode, which it does not.
+// Binary64 intervals: Boost.Interval whose directed roundings are made from the
+// round-to-nearest result and the sign of its exact error, and whose exp, log and Gamma come from
+// superpack's own series with proved remainders (elementary_double.hpp), never from libm.
 #pragma once
 #include <boost/numeric/interval.hpp>
 #include <cmath>
-#include <xmmintrin.h>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <type_traits>
 
 namespace superpack {
 
 namespace detail {
 
-// Outward-rounded exp and log of one double, computed by Arb at 64 bits and rounded to
-// the enclosing binary64 endpoint. The FPU mode is set to nearest around the call because
-// Arb's own double heuristics assume it.
-double arb_exp_down(double x);
-double arb_exp_up(double x);
-double arb_log_down(double x);
-double arb_log_up(double x);
-
-// Hides a value from the optimiser: the compiler must assume it changes here, so an
-// operation on it cannot be merged with the same operation under another rounding mode.
-// GCC's -frounding-math does not stop such merging (the self-test caught 1/3 computed once
-// for both bounds), so every directed operation goes through this barrier.
-inline double opaque(double x) {
-    asm volatile("" : "+x"(x));
+// The binary64 neighbours of x.
+inline double next_up(double x) {
+    if (!(x < std::numeric_limits<double>::infinity())) return x;  // +inf, NaN
+    if (x == 0) return std::numeric_limits<double>::denorm_min();
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    bits = x > 0 ? bits + 1 : bits - 1;
+    std::memcpy(&x, &bits, sizeof bits);
     return x;
 }
+inline double next_down(double x) { return -next_up(-x); }
 
-// Rounding control through the SSE control register MXCSR, which alone governs binary64
-// arithmetic on x86-64. Boost's c99 control calls glibc's fesetround, which also rewrites the
-// x87 control word and took a third of the time of a density computation.
-struct sse_rounding_control {
-    using rounding_mode = unsigned int;
-    static constexpr unsigned int mask = 0x6000, nearest = 0x0000, down = 0x2000, up = 0x4000, zero = 0x6000;
-    static void set(unsigned int mode) { _mm_setcsr((_mm_getcsr() & ~mask) | mode); }
-    static void get_rounding_mode(rounding_mode& mode) { mode = _mm_getcsr() & mask; }
-    static void set_rounding_mode(rounding_mode mode) { set(mode); }
-    static void downward() { set(down); }
-    static void upward() { set(up); }
-    static void to_nearest() { set(nearest); }
-    static void toward_zero() { set(zero); }
-    static double to_int(double x) { return std::nearbyint(x); }
-    static double force_rounding(double x) { return x; }
-};
-
-// Boost's rounded_arith_std with an optimisation barrier around each directed operation.
-struct rounded_arith_opaque : sse_rounding_control {
+// Directed roundings from the round-to-nearest result and the sign of its error, with no
+// change of the rounding mode (MXCSR writes were a fifth of the time of a density; the
+// start-up self-test checks that the mode is round-to-nearest). The error of + and - is
+// exact by TwoSum; the error of *, / and sqrt is exact by one fused multiply-add. Below
+// 2^-960 an error may underflow, so there a result is stepped outward without looking.
+// Exact results stay exact: [0, b] * [0, c] stays non-negative and 2 * (1/2) is 1.
+struct rounded_arith_outward {
     void init() {}
-    template <class U> double conv_down(const U& v) { this->downward(); return opaque(static_cast<double>(v)); }
-    template <class U> double conv_up(const U& v) { this->upward(); return opaque(static_cast<double>(v)); }
-    double add_down(double x, double y) { this->downward(); return opaque(opaque(x) + opaque(y)); }
-    double sub_down(double x, double y) { this->downward(); return opaque(opaque(x) - opaque(y)); }
-    double mul_down(double x, double y) { this->downward(); return opaque(opaque(x) * opaque(y)); }
-    double div_down(double x, double y) { this->downward(); return opaque(opaque(x) / opaque(y)); }
-    double add_up(double x, double y) { this->upward(); return opaque(opaque(x) + opaque(y)); }
-    double sub_up(double x, double y) { this->upward(); return opaque(opaque(x) - opaque(y)); }
-    double mul_up(double x, double y) { this->upward(); return opaque(opaque(x) * opaque(y)); }
-    double div_up(double x, double y) { this->upward(); return opaque(opaque(x) / opaque(y)); }
-    double median(double x, double y) { this->to_nearest(); return opaque((opaque(x) + opaque(y)) / 2); }
-    double sqrt_down(double x) { this->downward(); return opaque(std::sqrt(opaque(x))); }
-    double sqrt_up(double x) { this->upward(); return opaque(std::sqrt(opaque(x))); }
-    double int_down(double x) { this->downward(); return this->to_int(opaque(x)); }
-    double int_up(double x) { this->upward(); return this->to_int(opaque(x)); }
-};
+    template <class U> double conv_down(const U& v) { return convert(v, false); }
+    template <class U> double conv_up(const U& v) { return convert(v, true); }
+    double add_down(double x, double y) { const double s = x + y; return down(s, sum_error(x, y, s), true); }
+    double sub_down(double x, double y) { const double s = x - y; return down(s, sum_error(x, -y, s), true); }
+    double add_up(double x, double y) { const double s = x + y; return up(s, sum_error(x, y, s), true); }
+    double sub_up(double x, double y) { const double s = x - y; return up(s, sum_error(x, -y, s), true); }
+    double mul_down(double x, double y) { const double p = x * y; return down(p, std::fma(x, y, -p), x == 0 || y == 0); }
+    double mul_up(double x, double y) { const double p = x * y; return up(p, std::fma(x, y, -p), x == 0 || y == 0); }
+    double div_down(double x, double y) { const double q = x / y; return down(q, quotient_error(x, y, q), x == 0); }
+    double div_up(double x, double y) { const double q = x / y; return up(q, quotient_error(x, y, q), x == 0); }
+    // Any number between x and y will do: Boost uses it for midpoints (guesses).
+    double median(double x, double y) {
+        const double m = x / 2 + y / 2;
+        return m < x ? x : (m > y ? y : m);
+    }
+    double sqrt_down(double x) { const double r = std::sqrt(x); return x <= 0 ? 0.0 : down(r, std::fma(-r, r, x), false); }
+    double sqrt_up(double x) { const double r = std::sqrt(x); return x <= 0 ? 0.0 : up(r, std::fma(-r, r, x), false); }
+    double int_down(double x) { return std::floor(x); }
+    double int_up(double x) { return std::ceil(x); }
 
-template <class T>
-struct rounded_transc_arb;
-
-template <>
-struct rounded_transc_arb<double> : rounded_arith_opaque {
-    double exp_down(double x) { return arb_exp_down(x); }
-    double exp_up(double x) { return arb_exp_up(x); }
-    double log_down(double x) { return arb_log_down(x); }
-    double log_up(double x) { return arb_log_up(x); }
+private:
+    static constexpr double kErrorFloor = 0x1p-960;
+    // x + y - s exactly (Knuth's TwoSum, round-to-nearest).
+    static double sum_error(double x, double y, double s) {
+        const double y_part = s - x;
+        const double x_part = s - y_part;
+        return (x - x_part) + (y - y_part);
+    }
+    // The sign of x / y - q is that of (x - q y) / y.
+    static double quotient_error(double x, double y, double q) {
+        const double remainder = std::fma(-q, y, x);
+        return y > 0 ? remainder : -remainder;
+    }
+    // `error` has the sign of (exact result) - r wherever |r| >= kErrorFloor; `zero_exact` says
+    // that a zero r is exact (a sum, or a product with a zero operand).
+    static bool tiny_or_infinite(double r) {
+        return !(std::fabs(r) >= kErrorFloor && std::fabs(r) < std::numeric_limits<double>::infinity());
+    }
+    static double down(double r, double error, bool zero_exact) {
+        if (tiny_or_infinite(r)) return r == 0 && zero_exact ? 0.0 : next_down(r);
+        return error < 0 ? next_down(r) : r;
+    }
+    static double up(double r, double error, bool zero_exact) {
+        if (tiny_or_infinite(r)) return r == 0 && zero_exact ? 0.0 : next_up(r);
+        return error > 0 ? next_up(r) : r;
+    }
+    template <class U> static double convert(const U& v, bool up) {
+        const double d = static_cast<double>(v);
+        if constexpr (std::is_floating_point_v<U> && sizeof(U) <= sizeof(double)) {
+            return d;  // exact
+        } else {
+            if (static_cast<U>(d) == v) return d;
+            return up ? next_up(d) : next_down(d);
+        }
+    }
 };
 
 }  // namespace detail
 
+// No transcendental member: boost::numeric::exp and friends do not compile for DInterval,
+// so the only exp, log and Gamma are superpack's rigorous ones (interval.hpp).
 using DoublePolicies = boost::numeric::interval_lib::policies<
-    boost::numeric::interval_lib::save_state<detail::rounded_transc_arb<double>>,
+    boost::numeric::interval_lib::save_state_nothing<detail::rounded_arith_outward>,
     boost::numeric::interval_lib::checking_strict<double>>;
 
-// The double-precision interval type. Only exp, log, sqrt and integer powers are available
-// as transcendental operations; anything else fails to compile rather than using libm.
 using DInterval = boost::numeric::interval<double, DoublePolicies>;
 
 }  // namespace superpack
