@@ -71,6 +71,9 @@ FamilyLattice<I> enclose_cubic(Family family, const I& p) {
     const CubicConstants<I> constants = cubic_constants(p);
     auto equation = [&](const auto& s) { return cubic_equation(family, s, constants); };
     const double spread = std::max(width_upper(p), 1e-12);
+    // Newton stops within 2^8 units in the last place of s: quadratic convergence jumps from
+    // far above that to the rounding floor, so the stall test would only cost one more step.
+    const double target_width = std::ldexp(s_guess, -static_cast<int>(field.bits()) + 8);
     for (double radius = 1e-11 + 4 * spread; radius < 0.5; radius *= 64) {
         // The lower end is cut to 24 significant bits so that a ball backend (30-bit radius)
         // holds [0, lower end] exactly: the root-free piece below must not reach the root.
@@ -80,7 +83,7 @@ FamilyLattice<I> enclose_cubic(Family family, const I& p) {
         const double mantissa = std::frexp(std::max(0.0, std::min(s_guess - radius, s_guess * (1 - 0x1p-20))), &exponent);
         const double lower_end = std::ldexp(std::floor(std::ldexp(mantissa, 24)), exponent - 24);
         const I box = from_doubles(field.integer(0), lower_end, s_guess + radius);
-        NewtonResult<I> newton = newton_isolate(equation, box, 0.0, 200);
+        NewtonResult<I> newton = newton_isolate(equation, box, target_width, 200);
         // The refined box must lie in the box the proof started from: every root there lies in
         // it, and [0, lower end) is shown root-free below, so the root is the smallest.
         if (newton.status != RootStatus::unique || !contains(newton.initial_box, newton.box)) continue;
@@ -96,7 +99,7 @@ FamilyLattice<I> enclose_cubic(Family family, const I& p) {
             return lattice;
         }
         lattice.parameters = {{"s", newton.box}};
-        finish(lattice, p, cubic_basis(family, newton.box, p));
+        finish(lattice, p, cubic_basis_with_shift(family, newton.box, constants.shift));
         return lattice;
     }
     lattice.message = "interval Newton did not isolate the root s";

@@ -27,11 +27,16 @@ void require_in_domain(Family family, const Rational& p);
 // x^y with y (and possibly x) varying: the mixed-scalar cases needed by d/dp.
 template <class I> Jet<I> pow_nonneg(const I& x, const Jet<I>& y) { return exp(y * log(x)); }
 
-// 2^(-1/(2p)), the shift t of the C0 and C1 equations.
+// 2^(-1/(2p)) = exp(-log 2 / (2p)), the shift t of the C0 and C1 equations.
+template <class P, class L>
+P cubic_shift(const P& two_p, const L& log_two) {
+    return exp(-log_two / two_p);
+}
+
 template <class P>
 P cubic_shift(const P& p) {
     const auto field = scalar_field(p);
-    return exp(-log(field.integer(2)) / (field.integer(2) * p));
+    return cubic_shift(field.integer(2) * p, log(field.integer(2)));
 }
 
 // The quantities of the C0/C1 equations that depend on p only, computed once per p so that
@@ -47,7 +52,8 @@ template <class P>
 CubicConstants<P> cubic_constants(const P& p) {
     const auto field = scalar_field(p);
     const P two_p = field.integer(2) * p;
-    return {two_p, cubic_shift(p), exp(-two_p * log(field.integer(2)))};
+    const auto log_two = log(field.integer(2));
+    return {two_p, cubic_shift(two_p, log_two), exp(-two_p * log_two)};
 }
 
 // C0 (Eq. 2): (s + t)^(2p) + s^(2p) + 2^(-2p) - 1 = 0, s the smallest positive root.
@@ -69,15 +75,19 @@ auto cubic_equation(Family family, const S& s, const P& p) {
 }
 
 // Bases (rows e1, e2, e3) of Eqs. 1, 8, 5, 11.
+// With the shift t = 2^(-1/(2p)) already known (cubic_constants), or computed from p.
 template <class T>
-Basis<T> cubic_basis(Family family, const T& s, const T& p) {
-    const auto field = scalar_field(p);
-    const T t = cubic_shift(p);
-    const T side = field.integer(2) * t;  // 2^(1 - 1/(2p))
-    const T zero = constant_like(p, 0), one = constant_like(p, 1), two = constant_like(p, 2);
+Basis<T> cubic_basis_with_shift(Family family, const T& s, const T& t) {
+    const T side = constant_like(t, 2) * t;  // 2^(1 - 1/(2p))
+    const T zero = constant_like(t, 0), one = constant_like(t, 1), two = constant_like(t, 2);
     if (family == Family::C0)
         return Basis<T>{{{side, side, zero}, {zero, zero, two}, {-(two * s), two * (s + t), one}}};
     return Basis<T>{{{side, side, zero}, {side, zero, side}, {two * (s + t), -(two * s), -(two * s)}}};
+}
+
+template <class T>
+Basis<T> cubic_basis(Family family, const T& s, const T& p) {
+    return cubic_basis_with_shift(family, s, cubic_shift(p));
 }
 
 // O0 (Eq. 5): the height c = (1 - 2^(1-2p))^(1/(2p)) of e3 = i + j + 2c k.
