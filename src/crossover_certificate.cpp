@@ -11,7 +11,7 @@ namespace {
 
 template <class I>
 std::string decimal_text(const I& x) {
-    const DecimalEnclosure text = to_decimal(x, 20);
+    const DecimalEnclosure text = to_fixed(x, 20);
     return "[" + text.lo + ", " + text.hi + "]";
 }
 
@@ -40,6 +40,18 @@ Json smallest_root_json(Family family, const FamilyLattice<I>& lattice, const I&
                 {"root", exact_interval_json(lattice.search.back().root[0])},
                 {"reason", "N(X) = m - f(m)/f'(X) lies in the interior of X, and f is increasing on [0, upper end of X] "
                            "(df/ds = 2p ((s+t)^(2p-1) + k s^(2p-1)) > 0 for s >= 0), so s is the smallest positive root"}};
+}
+
+// A Newton box for s over a piece: the certified root enclosure widened by half its width on
+// each side (a tight box, so that a changed digit cannot leave a valid proof), proved again
+// here; the wide box of the root search when that fails.
+Json piece_root_json(const PieceRoot<Ball>& known) {
+    const Ball half_width = (upper_point(known.root) - lower_point(known.root)) / field_of(known.root).integer(2);
+    const Ball box = hull(lower_point(known.root) - half_width, upper_point(known.root) + half_width);
+    auto equation = [&](const auto& s) { return cubic_equation(known.family, s, known.piece); };
+    const NewtonResult<Ball> newton = newton_isolate(equation, box, 0.0, 50);
+    const bool tight = newton.status == RootStatus::unique && certainly_positive(lower_point(box));
+    return Json{{"box", exact_interval_json(tight ? box : known.root_box)}};
 }
 
 const char* sign_name(int sign) { return sign < 0 ? "negative" : "positive"; }
@@ -76,7 +88,7 @@ Json cubic_crossover_certificate(const CubicCrossover<typename Field::Interval>&
         for (const Family family : {Family::C0, Family::C1}) {
             const auto root = certify_piece_root(family, interval);
             if (!root) throw std::runtime_error("certificate: s not certified again over a piece");
-            entry[std::string("s_") + to_string(family)] = Json{{"box", exact_interval_json(root->root_box)}};
+            entry[std::string("s_") + to_string(family)] = piece_root_json(*root);
         }
         if (piece.claim == PieceClaim::root) entry["root"] = exact_interval_json(p);
         pieces.push_back(entry);
