@@ -187,7 +187,10 @@ void check_cubic_crossover(const Json& claim, Context& context) {
     Real phi(precision);
     context.require(intersect(phi, phi0, phi1), "claim.data.phi", "phi_C0 and phi_C1 at p*_c are disjoint");
     check_encloses(context, context.member(data, "phi", "claim.data"), "claim.data.phi", phi);
-    if (std::getenv("SUPERPACK_CHECKER_TRACE")) std::cerr << "cubic-crossover: checker bisections " << bisections << "\n";
+    // For measurements (NOTES.md 8.5): how often the checker had to cut a stored piece, and its own p*_c.
+    if (std::getenv("SUPERPACK_CHECKER_TRACE"))
+        std::cerr << "cubic-crossover: checker bisections " << bisections << ", p*_c in " << text(root) << " width " << width(root)
+                  << "\n";
 }
 
 const ClaimKindRegistration registration("cubic-crossover", check_cubic_crossover);
