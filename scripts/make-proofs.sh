@@ -55,7 +55,7 @@ crossover_slopes() {
     local name=$1
     shift
     local file="$root/proofs/$name.json"
-    "$superpack" "$@" --certificate "$file" >/dev/null 2>&1
+    "$superpack" "$@" --certificate "$file" >/dev/null
     "$superpack" verify "$file" >/dev/null
     echo "proofs/$name.json"
 }
