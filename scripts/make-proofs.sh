@@ -47,3 +47,21 @@ lattice() {
 lattice 1/2 "2/3,2/3,-2/3; -1/3,4/3,-1/3; 1/3,-1/3,-4/3" lattice-minkowski-p0.5
 lattice 3 "2,0,0; 0,2,0; 0,0,2" lattice-2Z3-p3
 lattice 2 "3.9,2,0; -2,-2,0; 0,0,2" lattice-overlapping-p2
+
+# crossover_slopes NAME COMMAND... : the certificate of a crossover or of the slopes (issue 7,
+# NOTES 8.5): p*_c with its uniqueness partition of (1, 10] (binary64 and 30 digits), p*_o with
+# the O0 = O1 lattice identity, and the slopes at p = 1 (a_plus as certified, not as printed).
+crossover_slopes() {
+    local name=$1
+    shift
+    local file="$root/proofs/$name.json"
+    "$superpack" "$@" --certificate "$file" >/dev/null
+    "$superpack" verify "$file" >/dev/null
+    echo "proofs/$name.json"
+}
+crossover_slopes crossover-cubic crossover cubic
+crossover_slopes crossover-cubic-30digits crossover cubic --digits 30
+crossover_slopes crossover-octahedral crossover octahedral
+crossover_slopes crossover-octahedral-30digits crossover octahedral --digits 30
+crossover_slopes slopes-p1 slopes
+crossover_slopes slopes-p1-30digits slopes --digits 30

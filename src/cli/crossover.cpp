@@ -1,8 +1,9 @@
-// superpack crossover cubic|octahedral [--digits D] [--json]
+// superpack crossover cubic|octahedral [--digits D] [--json] [--certificate FILE]
 #include <chrono>
 #include <memory>
 
 #include "common.hpp"
+#include "superpack/crossover_certificate.hpp"
 #include "superpack/crossover_json.hpp"
 #include "superpack/decimal.hpp"
 
@@ -11,7 +12,7 @@ namespace superpack::cli {
 namespace {
 
 struct CrossoverOptions {
-    std::string kind, digits;
+    std::string kind, digits, certificate;
     bool json = false;
 };
 
@@ -63,11 +64,13 @@ void print_octahedral(const OctahedralCrossover<I>& crossover, long digits) {
 int run(const CrossoverOptions& options) {
     if (options.kind != "cubic" && options.kind != "octahedral")
         throw Failure(exit_usage, "crossover: expected 'cubic' or 'octahedral', got '" + options.kind + "'");
+    if (!options.certificate.empty()) require_rounding_self_test();
     return with_field(options.digits, [&](const auto& field, long digits) {
         const auto start = std::chrono::steady_clock::now();
         Json document = header_json("crossover", field, digits);
         bool certified = false;
         std::string message;
+        Json certificate;  // built only for a certified result
         if (options.kind == "cubic") {
             std::cerr << "crossover: proving the sign of phi_C1 - phi_C0 on [1, 10]...\n";
             const auto crossover = certify_cubic_crossover(field, digits);
@@ -75,13 +78,21 @@ int run(const CrossoverOptions& options) {
             if (!options.json) print_cubic(crossover, digits);
             certified = crossover.certified;
             message = crossover.message;
+            if (certified && !options.certificate.empty()) certificate = cubic_crossover_certificate(crossover, field, digits);
         } else {
             const auto crossover = certify_octahedral_crossover(field, digits);
             document.update(octahedral_crossover_json(crossover));
             if (!options.json) print_octahedral(crossover, digits);
             certified = crossover.certified;
             message = crossover.message;
+            if (certified && !options.certificate.empty())
+                certificate = octahedral_crossover_certificate(crossover, field, digits);
         }
+        if (!certificate.is_null()) try {
+                write_certificate(options.certificate, certificate);
+            } catch (const std::runtime_error& error) {
+                throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+            }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         document["seconds"] = seconds;
         if (options.json) std::cout << document.dump(2) << "\n";
@@ -99,6 +110,8 @@ void add_crossover(CLI::App& app) {
     command->add_option("kind", options->kind, "cubic or octahedral")->required();
     command->add_option("--digits", options->digits, "significant digits (Arb balls, up to 100); default binary64");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->add_option("--certificate", options->certificate,
+                        "write a certificate of the crossover (replay it with `superpack verify FILE`); nothing when undecided");
     command->callback([options] { run(*options); });
 }
 

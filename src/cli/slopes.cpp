@@ -1,7 +1,8 @@
-// superpack slopes [--digits D] [--json]
+// superpack slopes [--digits D] [--json] [--certificate FILE]
 #include <memory>
 
 #include "common.hpp"
+#include "superpack/crossover_certificate.hpp"
 #include "superpack/crossover_json.hpp"
 #include "superpack/decimal.hpp"
 
@@ -10,7 +11,7 @@ namespace superpack::cli {
 namespace {
 
 struct SlopesOptions {
-    std::string digits;
+    std::string digits, certificate;
     bool json = false;
 };
 
@@ -43,6 +44,7 @@ void print_table(const SphereSlopes<I>& slopes) {
 }
 
 int run(const SlopesOptions& options) {
+    if (!options.certificate.empty()) require_rounding_self_test();
     return with_field(options.digits, [&](const auto& field, long digits) {
         const auto slopes = certify_sphere_slopes(field);
         if (options.json) {
@@ -53,6 +55,11 @@ int run(const SlopesOptions& options) {
             print_table(slopes);
         }
         if (!slopes.a_minus || !slopes.a_plus) throw Failure(exit_undecided, "slopes: undecided at this precision");
+        if (!options.certificate.empty()) try {
+                write_certificate(options.certificate, sphere_slopes_certificate(slopes, field, digits));
+            } catch (const std::runtime_error& error) {
+                throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+            }
         return exit_ok;
     });
 }
@@ -65,6 +72,8 @@ void add_slopes(CLI::App& app) {
         app.add_subcommand("slopes", "One-sided slopes a_minus, a_plus of the maximal density at p = 1 vs the paper");
     command->add_option("--digits", options->digits, "significant digits (Arb balls); default binary64");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->add_option("--certificate", options->certificate,
+                        "write a certificate of the slopes (replay it with `superpack verify FILE`); nothing when undecided");
     command->callback([options] { run(*options); });
 }
 
