@@ -4,7 +4,7 @@
 //   contact system for v = (a, b): F0 = |a|^q + |b|^q - 1, F1 = |a - x|^q + |b - t x|^q - 1;
 //   D(t) = det(u, v) = x b - t x a, and D'(t) by implicit differentiation of F = 0;
 //   area(K) = 4 Gamma(1 + 1/(2p))^2 / Gamma(1 + 1/p).
-// Nothing here is shared with the producer (include/superpack/superdisk.hpp).
+// Nothing here is shared with the producer (its superdisk header and driver).
 #pragma once
 #include <array>
 

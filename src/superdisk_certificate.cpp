@@ -40,9 +40,9 @@ const char* const exclusion_text =
 
 template <class I>
 Json lattice_proof_json(const HexagonLattice<I>& lattice) {
-    return Json{{"t", exact_interval_json(lattice.t)},
-                {"search_box", box_json(lattice.search_box)},
-                {"reason", "Krawczyk: K(X) in the interior of X for the contact system at this t, and det(u, v) > 0"}};
+    return Json{{"search_box", box_json(lattice.search_box)},
+                {"reason", "Krawczyk: K(X) in the interior of X for the contact system at the lattice's t (claim.data.lattices), "
+                           "and det(u, v) > 0"}};
 }
 
 template <class I>
