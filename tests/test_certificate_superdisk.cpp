@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 
 #include "checker/verifier.hpp"
 #include "superpack/superdisk_certificate.hpp"
@@ -138,9 +139,43 @@ TEST_CASE("superdisk-optimum: the certificates of proofs/ are valid and agree wi
     CHECK(compared >= 4);
 }
 
+TEST_CASE("superdisk-optimum: argmin_t holds every hexagon vertex of the optimal family, none of the other") {
+    // The vertices' t from mpmath (scripts/make_superdisk_vertices.py): if a family is optimal,
+    // each of its three hexagon vertices (folded into the first octant) is a minimiser of D.
+    std::ifstream data_file(std::string(SUPERPACK_TEST_DATA) + "/superdisk_vertices.json");
+    const Document vertices = Document::parse(data_file);
+    int checked = 0;
+    for (const std::string& file : superdisk_proof_files()) {
+        INFO(file);
+        std::ifstream in(file);
+        const Document document = Document::parse(in);
+        const std::string p = document["inputs"]["p_decimal"];
+        if (!vertices.contains(p)) continue;
+        const Document& argmin = document["claim"]["data"]["argmin_t"];
+        auto in_argmin = [&](const std::string& t) {
+            for (std::size_t k = 0; k < argmin.size(); ++k)
+                if (meet(read_interval(document, "/claim/data/argmin_t/" + std::to_string(k)), reference(t))) return true;
+            return false;
+        };
+        const Document& attained = document["claim"]["data"]["attained_by"];
+        for (const std::string family : {"Lambda0", "Lambda1"}) {
+            const bool optimal = std::find(attained.begin(), attained.end(), family) != attained.end();
+            for (const auto& t : vertices[p][family]) {
+                INFO(family << " vertex t = " << t.get<std::string>());
+                // Lambda0 has t = 1 and Lambda1 t = 0 as a vertex; when only one family is optimal,
+                // each vertex of the other is a certified non-minimiser (its gap is > 1e-4).
+                if (optimal) CHECK(in_argmin(t));
+                else if (attained.size() == 1) CHECK(!in_argmin(t));
+                ++checked;
+            }
+        }
+    }
+    CHECK(checked >= 16);
+}
+
 TEST_CASE("superdisk-optimum: changing a digit of a bound is rejected, naming a step") {
     long tampered = 0, rejected = 0, boxes = 0, boxes_valid = 0;
-    for (const char* p : {"1.25", "0.75"}) {
+    for (const char* p : {"1.25", "2"}) {
         const Document original = certificate(p);
         REQUIRE(verify_document(original).verdict == Verdict::valid);
         // Every bound of the claim, the witness and the two lattices; of the pieces, every bound
@@ -150,10 +185,18 @@ TEST_CASE("superdisk-optimum: changing a digit of a bound is rejected, naming a 
         collect_bounds(original["proof"]["witness"], "/proof/witness", bounds);
         collect_bounds(original["proof"]["lattices"], "/proof/lattices", bounds);
         const Document& pieces = original["proof"]["pieces"];
-        for (std::size_t k = 0; k < pieces.size(); k += 10)
-            collect_bounds(pieces[k], "/proof/pieces/" + std::to_string(k), bounds);
+        std::set<std::string> methods;
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            // Every tenth piece, and the first piece of each lower-bound method.
+            const bool first_of_method = methods.insert(pieces[k]["method"].get<std::string>()).second;
+            if (k % 10 == 0 || first_of_method)
+                collect_bounds(pieces[k], "/proof/pieces/" + std::to_string(k), bounds);
+        }
         REQUIRE(bounds.size() > 50);
-        std::cout << "superdisk tamper at p = " << p << ": " << pieces.size() << " pieces, " << bounds.size() << " bounds\n";
+        std::cout << "superdisk tamper at p = " << p << ": " << pieces.size() << " pieces, " << bounds.size()
+                  << " bounds, methods sampled:";
+        for (const std::string& method : methods) std::cout << " " << method;
+        std::cout << "\n";
         for (const std::string& bound : bounds) {
             Document copy = original;
             const Document::json_pointer pointer(bound);
