@@ -65,8 +65,6 @@ public:
         return equations_.derivative(solution.v[0], solution.v[1], t);
     }
 
-    const SuperdiskEquations& equations() const { return equations_; }
-
 private:
     Context& context_;
     SuperdiskEquations equations_;

@@ -98,9 +98,11 @@ Json superdisk_certificate(const SuperdiskReport<typename Field::Interval>& repo
                             rational_text(p) + " has density phi = area / Delta(2K) in [" + phi_text.lo + ", " +
                             phi_text.hi + "] (exact endpoints in data.optimal_phi; Delta(2K) in data.optimal_determinant), "
                             "attained within that enclosure " + attained_text +
-                            " (their determinants lie in the enclosure of Delta(2K) and their t in data.argmin_t), and every "
-                            "minimiser t in [0, 1] of D(t) lies in data.argmin_t. By Fejes Toth's theorem this lattice "
-                            "density is also the densest packing of translates. " + premise_text},
+                            " (determinant 4 D within the enclosure of Delta(2K), t in data.argmin_t), and every "
+                            "minimiser t in [0, 1] of D(t) lies in data.argmin_t. Premise, not replayed (proof.premise): the "
+                            "densest packing of translates of a centrally symmetric convex disk is a lattice packing (Fejes "
+                            "Toth 1950, Rogers 1951), and Delta(K) = min det(u, v) over the inscribed affinely regular "
+                            "hexagons u, v, v - u on bd K (Reinhardt 1934, Mahler 1947; Cassels, Geometry of Numbers, ch. V)"},
                {"data", Json{{"p", rational_text(p)},
                              {"area", exact_interval_json(report.area)},
                              {"optimal_determinant", exact_interval_json(report.optimal_determinant)},
