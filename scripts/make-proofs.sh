@@ -65,3 +65,24 @@ crossover_slopes crossover-octahedral crossover octahedral
 crossover_slopes crossover-octahedral-30digits crossover octahedral --digits 30
 crossover_slopes slopes-p1 slopes
 crossover_slopes slopes-p1-30digits slopes --digits 30
+
+# superdisk P NAME: the superdisk-optimum certificate (densest lattice packing of the superdisk
+# |x|^(2p) + |y|^(2p) <= 1, by the branch and bound over t in [0, 1]; NOTES.md 8.6). p = 1/2
+# (the square tiles) and p < 1/2 have no certificate of this kind.
+superdisk() {
+    local p=$1 name=$2
+    local file="$root/proofs/$name.json"
+    local status=0
+    "$superpack" superdisk --p "$p" --certificate "$file" >/dev/null || status=$?
+    if [ "$status" -ne 0 ]; then echo "superdisk failed ($status) for $name" >&2; exit "$status"; fi
+    "$superpack" verify "$file" >/dev/null
+    echo "proofs/$name.json"
+}
+
+# Lambda0 optimal (p = 3/4 and p = 2), Lambda1 optimal (p = 5/4), and the circle (p = 1:
+# both families are the hexagonal lattice, phi = pi / (2 sqrt 3); D is constant there, so the
+# 1000-piece budget stops the branch and bound at width ~6e-6).
+superdisk 0.75 superdisk-optimum-p0.75
+superdisk 1.25 superdisk-optimum-p1.25
+superdisk 2 superdisk-optimum-p2
+superdisk 1 superdisk-optimum-p1

@@ -16,6 +16,16 @@ const char* to_string(PieceVerdict verdict) {
     return "undecided";
 }
 
+const char* to_string(LowerBoundMethod method) {
+    switch (method) {
+        case LowerBoundMethod::naive: return "naive";
+        case LowerBoundMethod::naive_and_mean_value: return "naive_and_mean_value";
+        case LowerBoundMethod::left_end: return "left_end";
+        case LowerBoundMethod::right_end: return "right_end";
+    }
+    return "naive";
+}
+
 const char* to_string(OptimumStatus status) {
     switch (status) {
         case OptimumStatus::certified: return "certified";
@@ -65,6 +75,7 @@ struct Evaluation {
     explicit Evaluation(const I& zero) : value(zero), derivative(zero) {}
     RootStatus status = RootStatus::undecided;
     std::vector<I> v;
+    std::vector<I> search_box;  // where K(X) in int X was proved
     I value;       // D on the piece (naive enclosure)
     I derivative;  // D' on the piece; contains everything when unknown
     bool derivative_known = false;
@@ -95,6 +106,7 @@ Evaluation<I> evaluate(const I& piece, const I& q, double margin, bool with_deri
     result.reason = proof.reason;
     if (proof.status != RootStatus::unique) return result;
     result.v = proof.box;
+    result.search_box = proof.initial_box;
     const I& a = result.v[0];
     const I& b = result.v[1];
     result.value = hexagon_determinant(a, b, piece, q);
@@ -127,6 +139,7 @@ HexagonLattice<I> lattice_at(const I& t, const I& q, const I& area) {
     lattice.status = at.status;
     lattice.reason = at.reason;
     if (at.status != RootStatus::unique) return lattice;
+    lattice.search_box = at.search_box;
     const I two = field.integer(2);
     const I x = boundary_x(t, q);
     lattice.basis = {{{two * x, two * t * x}, {two * at.v[0], two * at.v[1]}}};
@@ -215,13 +228,14 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
         }
     };
     auto bound_piece = [&](const I& t) {
-        HexagonPiece<I> piece{t, PieceVerdict::undecided, zero, {}, zero, ""};
+        HexagonPiece<I> piece{t, PieceVerdict::undecided, zero, {}, zero, "", {}, LowerBoundMethod::naive, zero};
         const Evaluation<I> at = evaluate(t, q, 1e-9 + 1e-3 * width_upper(t));
         if (at.status != RootStatus::unique) {
             piece.reason = "contact system not certified on the piece: " + at.reason;
             return piece;
         }
         piece.v = at.v;
+        piece.search_box = at.search_box;
         piece.lower_bound = at.value;
         if (!at.derivative_known) {
             piece.verdict = PieceVerdict::bounded;
@@ -235,6 +249,7 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
             if (end.status == RootStatus::unique) {
                 piece.verdict = PieceVerdict::monotone;
                 piece.lower_bound = end.determinant / field.integer(4);
+                piece.method = increasing ? LowerBoundMethod::left_end : LowerBoundMethod::right_end;
                 piece.reason = increasing ? "D' > 0: minimum at the left end" : "D' < 0: minimum at the right end";
                 return piece;
             }
@@ -247,7 +262,11 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
         if (middle.status == RootStatus::unique) {
             const I form = middle.value + at.derivative * (t - center);
             I meet = form;
-            if (intersect(meet, form, at.value)) piece.lower_bound = meet;
+            if (intersect(meet, form, at.value)) {
+                piece.lower_bound = meet;
+                piece.method = LowerBoundMethod::naive_and_mean_value;
+                piece.center = center;
+            }
         }
         return piece;
     };

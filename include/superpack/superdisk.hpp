@@ -67,6 +67,10 @@ struct ContactSystem {
 enum class PieceVerdict { discarded, monotone, bounded, undecided };
 const char* to_string(PieceVerdict verdict);
 
+// How a piece's lower bound of D was obtained (a certificate replays exactly that method).
+enum class LowerBoundMethod { naive, naive_and_mean_value, left_end, right_end };
+const char* to_string(LowerBoundMethod method);
+
 // One piece of the parameter range [0, 1] and what is proved about D on it.
 template <class I>
 struct HexagonPiece {
@@ -76,6 +80,9 @@ struct HexagonPiece {
     std::vector<I> v;       // Krawczyk enclosure of v(t) for all t in the piece
     I derivative;           // enclosure of D'(t) on the piece (when computed)
     std::string reason;
+    std::vector<I> search_box;  // the box on which K(X) in int X was proved (for certificates)
+    LowerBoundMethod method = LowerBoundMethod::naive;
+    I center;               // naive_and_mean_value: the point m of D(m) + D'(T)(T - m)
 };
 
 // The lattice with u(t), v(t), v - u on bd K, as a packing lattice of K (basis 2u, 2v).
@@ -89,6 +96,7 @@ struct HexagonLattice {
     I determinant;                          // 4 det(u, v) > 0
     I phi;
     std::string reason;
+    std::vector<I> search_box;  // the box on which K(X) in int X proved v(t) (for certificates)
 };
 
 enum class OptimumStatus { certified, undecided, not_applicable };

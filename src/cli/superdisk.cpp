@@ -1,17 +1,18 @@
-// superpack superdisk --p P [--digits D] [--json]
+// superpack superdisk --p P [--digits D] [--json] [--certificate FILE]
 // superpack superdisk --scan a:b:h --csv
 #include <memory>
 
 #include "common.hpp"
 #include "superpack/decimal.hpp"
 #include "superpack/superdisk.hpp"
+#include "superpack/superdisk_certificate.hpp"
 
 namespace superpack::cli {
 
 namespace {
 
 struct SuperdiskCliOptions {
-    std::string p, digits, scan;
+    std::string p, digits, scan, certificate;
     bool json = false, csv = false;
 };
 
@@ -158,12 +159,22 @@ int run(const SuperdiskCliOptions& options) {
     require_rounding_self_test();
     if (!options.scan.empty()) {
         if (!options.csv) throw Failure(exit_usage, "--scan needs --csv");
+        if (!options.certificate.empty()) throw Failure(exit_usage, "--certificate needs --p (one p), not --scan");
         return run_scan(options);
     }
     if (options.p.empty()) throw Failure(exit_usage, "superdisk needs --p P or --scan a:b:h --csv");
     const Rational p = parse_p(options.p);
+    if (!options.certificate.empty() && p <= Rational(1, 2))
+        throw Failure(exit_usage, "superdisk: no certificate for p <= 1/2 (p = 1/2 tiles; p < 1/2 is not convex)");
     return with_field(options.digits, [&](const auto& field, long digits) {
         const auto report = analyse_superdisk(p, field);
+        if (!options.certificate.empty() && report.status == OptimumStatus::certified) {
+            try {
+                write_certificate(options.certificate, superdisk_certificate(report, p, field, digits));
+            } catch (const std::runtime_error& error) {
+                throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+            }
+        }
         if (options.json) {
             Json document = header_json("superdisk", field, digits);
             document["p"] = options.p;
@@ -190,6 +201,9 @@ void add_superdisk(CLI::App& app) {
     command->add_option("--scan", options->scan, "a:b:h: every p = a, a + h, ..., <= b (with --csv)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_flag("--csv", options->csv, "with --scan: one CSV row per p on stdout");
+    command->add_option("--certificate", options->certificate,
+                        "with --p > 1/2: write a certificate of the optimum (replay it with `superpack verify FILE`); "
+                        "nothing is written when undecided");
     command->callback([options] { run(*options); });
 }
 
