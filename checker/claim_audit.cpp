@@ -131,7 +131,7 @@ void check_audit(const Json& claim, Context& context) {
             symbols = *replayed;
         } else {
             if (!decided) continue;
-            if (parameters.is_null()) context.malformed(proof_path + ".parameters", "a decided piece needs its parameter proof");
+            context.require(!parameters.is_null(), proof_path + ".parameters", "a decided piece needs its parameter proof");
             symbols = replay_family_parameters(context, family, parameters, proof_path + ".parameters", p, claim_path + ".p").symbols;
         }
         check_family_verdict(context, forms, symbols, p, pieces[k], claim_path, context.member(proofs[k], "lattice", proof_path),
