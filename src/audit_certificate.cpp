@@ -50,6 +50,13 @@ Json enumeration_json(const LatticeCheck<I>& check) {
                 {"contacts", contacts}};
 }
 
+// An exact piece end for people: "0.5", or "1216766151/2392000000 (~0.50868150125)".
+std::string end_text(const Rational& x) {
+    const std::string exact = decimal_or_fraction_text(x);
+    if (exact.find('/') == std::string::npos) return exact;
+    return exact + " (~" + to_fixed(DoubleField{}.rational(x), 11).lo + ")";
+}
+
 std::string triple_text(const Coefficients& c) {
     return "(" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) + ")";
 }
@@ -147,7 +154,7 @@ Json audit_certificate(const AuditResult& result) {
             summary.push_back({piece.lo, piece.hi, words});
     }
     std::string text = "For every p in each piece [lo, hi] of data.pieces (exact rational ends; the pieces cover [" +
-                       rational_text(result.range.lo) + ", " + rational_text(result.range.hi) + "] without gaps), " +
+                       end_text(result.range.lo) + ", " + end_text(result.range.hi) + "] without gaps), " +
                        (family == Family::O1 ? std::string("the O1 lattice (Eq. 11, (q, s) on the root branch of Eq. 12 through "
                                                            "Minkowski's (1/6, 2/3) at p = 1/2)")
                                              : std::string(lattice_words(family))) +
@@ -157,9 +164,9 @@ Json audit_certificate(const AuditResult& result) {
     if (family == Family::O1)
         text += " The branch is followed by continuation: a Krawczyk box per piece, each holding the root of the next "
                 "piece at their shared end; a piece without a box breaks the chain.";
-    text += " In decimals:";
+    text += " The verdicts, merged:";
     for (const Range& range : summary)
-        text += " [" + decimal_or_fraction_text(range.lo) + ", " + decimal_or_fraction_text(range.hi) + "] " + range.verdict + ";";
+        text += " [" + end_text(range.lo) + ", " + end_text(range.hi) + "] " + range.verdict + ";";
     text.back() = '.';
     const Json range{{"lo", rational_text(result.range.lo)}, {"hi", rational_text(result.range.hi)}};
     Json claim{{"kind", "audit"},
