@@ -1,6 +1,7 @@
 // Claim kind "audit" (written by `superpack audit --family F --certificate FILE`): the range
 // [lo, hi] of p is cut into pieces with exact rational ends, each with a verdict that holds for
-// EVERY p of the piece: packing with k contacts, or overlapping with a witness vector. Pieces
+// EVERY p of the piece: packing with k contacts, or overlapping with a witness vector; or
+// overlapping_at_point: not a packing at the one stated point p = at of the piece. Pieces
 // marked undecided carry their reason and prove nothing. The checker requires the pieces to
 // cover the range without gaps and replays each decided piece with p as an MPFI interval:
 //   C0, C1, O0: the family's parameter proof at interval p (replay_family_parameters: Newton
@@ -43,9 +44,27 @@ struct Chain {
     std::optional<Box> previous;
 };
 
-// Replays the O1 box of one piece; returns the symbols l, q, s, or nothing when the chain to
-// p = 1/2 is broken (the piece then cannot be decided).
-std::optional<NamedReals> replay_o1_piece(Context& context, const Json& node, const std::string& path, const Piece& piece,
+// The symbols of the O1 basis from the root box of Eq. (12) at p.
+NamedReals o1_symbols(const Box& root, const Real& p) {
+    return NamedReals{{"l", OctahedralEquations{p}.l()}, {"q", root[0]}, {"s", root[1]}};
+}
+
+// The unique root of Eq. (12) in `box` at the single point p0 (the box holds the branch for
+// every p of its piece, p0 among them), tightened by Krawczyk.
+Box o1_root_at(Context& context, const Box& box, const Real& p0, const std::string& path) {
+    const KrawczykReplay replay = replay_krawczyk(octahedral_system(p0), box, 80);
+    context.require(replay.status == ReplayStatus::unique, path, "no unique root in the box at the point p = " + text(p0));
+    return replay.root;
+}
+
+struct O1Piece {
+    Box box;   // the stored box: exactly one root for every p of the piece
+    Box root;  // the checker's tightened box of that root over the piece
+};
+
+// Replays the O1 box of one piece; returns it, or nothing when the chain to p = 1/2 is broken
+// (the piece then cannot be decided).
+std::optional<O1Piece> replay_o1_piece(Context& context, const Json& node, const std::string& path, const Piece& piece,
                                           const Real& p, Chain& chain, bool first) {
     const mpfr_prec_t precision = p.precision();
     if (node.is_null()) {
@@ -66,16 +85,15 @@ std::optional<NamedReals> replay_o1_piece(Context& context, const Json& node, co
         linked = piece.lo == half && minkowski_solves_eq12() && subset(rational(mpq_class(1, 6), precision), box[0]) &&
                  subset(rational(mpq_class(2, 3), precision), box[1]);
     } else if (chain.previous) {
-        const KrawczykReplay at_end = replay_krawczyk(octahedral_system(rational(piece.lo, precision)), box, 80);
-        context.require(at_end.status == ReplayStatus::unique, path, "no unique root at the lower end of the piece");
-        linked = subset(at_end.root[0], (*chain.previous)[0]) && subset(at_end.root[1], (*chain.previous)[1]);
+        const Box at_end = o1_root_at(context, box, rational(piece.lo, precision), path);
+        linked = subset(at_end[0], (*chain.previous)[0]) && subset(at_end[1], (*chain.previous)[1]);
     }
     chain.previous = box;
     if (!linked) {
         chain.previous.reset();
         return std::nullopt;
     }
-    return NamedReals{{"l", OctahedralEquations{p}.l()}, {"q", replay.root[0]}, {"s", replay.root[1]}};
+    return O1Piece{box, replay.root};
 }
 
 void check_audit(const Json& claim, Context& context) {
@@ -121,20 +139,32 @@ void check_audit(const Json& claim, Context& context) {
         const std::string verdict = context.string_at(pieces[k], "verdict", claim_path);
         const bool decided = verdict != "undecided";
         if (!decided) context.string_at(pieces[k], "reason", claim_path);  // an undecided piece says why
+        // overlapping_at_point: the claim is about the one point p = at of the piece.
+        const bool at_point = verdict == "overlapping_at_point";
+        std::optional<mpq_class> at;
+        if (at_point) {
+            at = context.rational_at(pieces[k], "at", claim_path);
+            context.require(piece.lo <= *at && *at <= piece.hi, claim_path + ".at", "the point is not in the piece");
+        }
+        const Real p_claimed = at ? rational(*at, precision) : p;
+        const std::string parameters_path = proof_path + ".parameters";
         const Json& parameters = context.member(proofs[k], "parameters", proof_path);
         NamedReals symbols;
         if (family == "O1") {
-            const auto replayed = replay_o1_piece(context, parameters, proof_path + ".parameters", piece, p, chain, k == 0);
+            const auto replayed = replay_o1_piece(context, parameters, parameters_path, piece, p, chain, k == 0);
             if (!decided) continue;
-            context.require(replayed.has_value(), proof_path + ".parameters",
+            context.require(replayed.has_value(), parameters_path,
                             "the branch through (1/6, 2/3) at p = 1/2 is not followed onto this piece");
-            symbols = *replayed;
+            symbols = o1_symbols(at ? o1_root_at(context, replayed->box, p_claimed, parameters_path) : replayed->root, p_claimed);
         } else {
             if (!decided) continue;
-            context.require(!parameters.is_null(), proof_path + ".parameters", "a decided piece needs its parameter proof");
-            symbols = replay_family_parameters(context, family, parameters, proof_path + ".parameters", p, claim_path + ".p").symbols;
+            context.require(!parameters.is_null(), parameters_path, "a decided piece needs its parameter proof");
+            // The piece's proof holds for every p of the piece, so also at the point.
+            symbols = replay_family_parameters(context, family, parameters, parameters_path, p_claimed, claim_path + ".p").symbols;
         }
-        check_family_verdict(context, forms, symbols, p, pieces[k], claim_path, context.member(proofs[k], "lattice", proof_path),
+        Json stated = pieces[k];
+        if (at_point) stated["verdict"] = "overlapping";  // at the point p = at
+        check_family_verdict(context, forms, symbols, p_claimed, stated, claim_path, context.member(proofs[k], "lattice", proof_path),
                              proof_path + ".lattice");
     }
     context.require(reached == range.hi, "claim.data.pieces", "the pieces stop before the end of the range");

@@ -1,5 +1,7 @@
 #include "superpack/audit_certificate.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "superpack/decimal.hpp"
@@ -55,6 +57,30 @@ std::string end_text(const Rational& x) {
     const std::string exact = decimal_or_fraction_text(x);
     if (exact.find('/') == std::string::npos) return exact;
     return exact + " (~" + to_fixed(DoubleField{}.rational(x), 11).lo + ")";
+}
+
+// O1, a piece whose audit refuted the packing at its midpoint p0 only: the root at p0 from the
+// piece's own Krawczyk box (which holds the branch for every p of the piece), and the lattice
+// check at that one p. The verdict {"verdict": "overlapping_at_point", "at", "witness"}, or
+// nothing when the refutation does not reproduce.
+std::optional<Json> o1_point_refutation(const AuditPiece& piece) {
+    Rational middle = (piece.lo + piece.hi) / 2;
+    middle.canonicalize();
+    const DoubleField field;
+    const DInterval p = field.rational(middle);
+    auto equations = [&](const auto& x) { return o1_equations(x, p); };
+    const KrawczykResult<DInterval> root = krawczyk_isolate(equations, piece.lattice->search.back().piece, 0.0, 60);
+    if (root.status != RootStatus::unique) return std::nullopt;
+    const std::vector<Coefficients> identities = family_contact_triples(Family::O1);
+    const LatticeCheck<DInterval> check = check_lattice(o1_basis(root.box[0], root.box[1], p), p, [&](const Coefficients& c) {
+        return std::find(identities.begin(), identities.end(), c) != identities.end();
+    });
+    if (check.verdict != Verdict::overlapping) return std::nullopt;
+    Json verdict = verdict_json(check);
+    verdict["verdict"] = "overlapping_at_point";
+    verdict["at"] = rational_text(middle);
+    verdict["reason"] = "the lattice overlaps at the one point p = at; the rest of the piece is undecided (" + piece.reason + ")";
+    return verdict;
 }
 
 std::string triple_text(const Coefficients& c) {
@@ -118,6 +144,7 @@ Json audit_certificate(const AuditResult& result) {
         const bool certified = piece.lattice && piece.lattice->status == FamilyStatus::certified;
         bool decided = certified && piece.check && piece.check->verdict != Verdict::undecided;
         std::string reason = piece.reason;
+        const bool linked_before = linked;
         if (family == Family::O1) {
             if (certified)
                 parameters = Json{{"kind", "krawczyk"},
@@ -133,9 +160,14 @@ Json audit_certificate(const AuditResult& result) {
         } else if (decided) {
             parameters = family_parameter_proof(*piece.lattice, p_interval);
         }
+        std::optional<Json> at_point;
+        if (!decided && family == Family::O1 && certified && linked_before && piece.outcome == "overlapping_at_point")
+            at_point = o1_point_refutation(piece);
         if (decided) {
             verdict = verdict_json(*piece.check);
             lattice = enumeration_json(*piece.check);
+        } else if (at_point) {
+            verdict = *at_point;
         } else {
             if (piece.outcome == "overlapping_at_point")
                 reason += " (the audit's point refutation is not part of this certificate)";
@@ -148,6 +180,7 @@ Json audit_certificate(const AuditResult& result) {
         std::string words = entry["verdict"].get<std::string>();
         if (words == "packing") words += " with " + std::to_string(piece.check->contacts()) + " contacts";
         if (words == "overlapping") words += " (witness " + triple_text(piece.check->witness->coefficients) + ")";
+        if (words == "overlapping_at_point") words = "undecided, but overlapping at one certified point per piece";
         if (!summary.empty() && summary.back().verdict == words && summary.back().hi == piece.lo)
             summary.back().hi = piece.hi;
         else
@@ -159,8 +192,9 @@ Json audit_certificate(const AuditResult& result) {
                                                            "Minkowski's (1/6, 2/3) at p = 1/2)")
                                              : std::string(lattice_words(family))) +
                        " has the verdict stated for the piece: a packing with the stated contacts, "
-                       "or not a packing (the witness vector has 2p-norm < 2). Pieces marked undecided are listed with "
-                       "their reason and prove nothing.";
+                       "or not a packing (the witness vector has 2p-norm < 2). A piece marked overlapping_at_point is "
+                       "not a packing at the one point p = at of the piece (witness) and proves nothing about its other "
+                       "p. Pieces marked undecided are listed with their reason and prove nothing.";
     if (family == Family::O1)
         text += " The branch is followed by continuation: a Krawczyk box per piece, each holding the root of the next "
                 "piece at their shared end; a piece without a box breaks the chain.";

@@ -9,6 +9,7 @@
 #include "superpack/certificate.hpp"
 #include "superpack/family_certificate.hpp"
 #include "superpack/lattice_certificate.hpp"
+#include "certificate_tamper.hpp"
 #include "support.hpp"
 
 namespace {
@@ -34,39 +35,8 @@ Document lattice_certificate(const std::string& p, const std::string& basis) {
 const char* const minkowski_basis = "2/3,2/3,-2/3; -1/3,4/3,-1/3; 1/3,-1/3,-4/3";
 const char* const overlapping_basis = "3.9,2,0; -2,-2,0; 0,0,2";
 
-// Every {"lo", "hi"} string in the claim's data and in the proof, as JSON pointers.
-void collect_bounds(const Document& node, const std::string& pointer, std::vector<std::string>& bounds) {
-    if (node.is_object()) {
-        if (node.contains("lo") && node.contains("hi") && node["lo"].is_string()) {
-            bounds.push_back(pointer + "/lo");
-            bounds.push_back(pointer + "/hi");
-            return;
-        }
-        for (const auto& [key, value] : node.items()) collect_bounds(value, pointer + "/" + key, bounds);
-    } else if (node.is_array()) {
-        for (std::size_t k = 0; k < node.size(); ++k) collect_bounds(node[k], pointer + "/" + std::to_string(k), bounds);
-    }
-}
-
-// Changes the leading digit of the mantissa so that the bound moves inward (a lower end up,
-// an upper end down): "5*2^-3" as a lower end becomes "6*2^-3", as an upper end "4*2^-3".
-std::string tamper_inward(const std::string& text, bool lower) {
-    if (text == "0") return lower ? "1" : "-1";
-    const std::size_t star = text.find('*');
-    std::string mantissa = text.substr(0, star);
-    const std::string rest = star == std::string::npos ? "" : text.substr(star);
-    const bool negative = mantissa[0] == '-';
-    const std::size_t lead = negative ? 1 : 0;
-    const bool grow = lower != negative;  // make |m| larger?
-    if (grow) {
-        if (mantissa[lead] == '9') mantissa.insert(lead, "1");
-        else ++mantissa[lead];
-    } else {
-        --mantissa[lead];
-        while (mantissa.size() > lead + 1 && mantissa[lead] == '0') mantissa.erase(lead, 1);
-    }
-    return mantissa + rest;
-}
+using certificate_tamper::collect_bounds;
+using certificate_tamper::tamper_inward;
 
 }  // namespace
 

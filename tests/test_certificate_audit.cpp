@@ -12,6 +12,7 @@
 #include "checker/equations_audit.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/audit_certificate.hpp"
+#include "certificate_tamper.hpp"
 #include "support.hpp"
 
 namespace {
@@ -44,39 +45,8 @@ Document proof_file(const std::string& name) {
     return Document::parse(in);
 }
 
-// Every {"lo", "hi"} string under `node`, as JSON pointers.
-void collect_bounds(const Document& node, const std::string& pointer, std::vector<std::string>& bounds) {
-    if (node.is_object()) {
-        // Exact interval endpoints only (they carry a decimal text); the rational piece ends are
-        // tampered with by the structural tests.
-        if (node.contains("lo") && node.contains("hi") && node.contains("decimal")) {
-            bounds.push_back(pointer + "/lo");
-            bounds.push_back(pointer + "/hi");
-            return;
-        }
-        for (const auto& [key, value] : node.items()) collect_bounds(value, pointer + "/" + key, bounds);
-    } else if (node.is_array()) {
-        for (std::size_t k = 0; k < node.size(); ++k) collect_bounds(node[k], pointer + "/" + std::to_string(k), bounds);
-    }
-}
-
-// The leading digit of the mantissa moved so that the bound moves inward.
-std::string tamper_inward(const std::string& text, bool lower) {
-    if (text == "0") return lower ? "1" : "-1";
-    const std::size_t star = text.find('*');
-    std::string mantissa = text.substr(0, star);
-    const std::string rest = star == std::string::npos ? "" : text.substr(star);
-    const bool negative = mantissa[0] == '-';
-    const std::size_t lead = negative ? 1 : 0;
-    if (lower != negative) {
-        if (mantissa[lead] == '9') mantissa.insert(lead, "1");
-        else ++mantissa[lead];
-    } else {
-        --mantissa[lead];
-        while (mantissa.size() > lead + 1 && mantissa[lead] == '0') mantissa.erase(lead, 1);
-    }
-    return mantissa + rest;
-}
+using certificate_tamper::collect_bounds;
+using certificate_tamper::tamper_inward;
 
 // Moves every exact bound under the given pointers inward (except those whose pointer holds
 // `skip`) and requires each change to be rejected with a path; returns how many were changed.
@@ -162,6 +132,15 @@ TEST_CASE("proofs/: the family lattice-checks and audits are valid and say what 
     }
     CHECK(covered_lo <= Rational(508682, 1000000));
     CHECK(covered_hi >= Rational(780987, 1000000));
+    // ... and at a certified point of every piece of [1/2, 0.791991].
+    for (const Document& piece : pieces("audit-O1-p0.5-0.792482.json")) {
+        if (rational(piece["p"]["hi"]) > Rational(791991, 1000000)) break;
+        CHECK(piece["verdict"] != "undecided");
+        if (piece["verdict"] == "overlapping_at_point") {
+            CHECK(piece["witness"]["coefficients"] == Document::array({1, -1, -1}));
+            CHECK((rational(piece["p"]["lo"]) <= rational(piece["at"]) && rational(piece["at"]) <= rational(piece["p"]["hi"])));
+        }
+    }
 }
 
 TEST_CASE("the checker's contact identities: the paper's contact vectors and nothing else") {
@@ -323,15 +302,29 @@ TEST_CASE("audit: gaps, deleted proofs, claims over undecided pieces and broken 
     static const Document o1 = audit(Family::O1, "1/2", "0.51", 10, 3);
     CHECK(verify_document(o1).verdict == Verdict::valid);
     const Document& o1_pieces = o1["claim"]["data"]["pieces"];
-    std::size_t decided = 0;
-    while (decided < o1_pieces.size() && o1_pieces[decided]["verdict"] == "undecided") ++decided;
+    std::size_t decided = 0;  // the first piece overlapping for every p
+    while (decided < o1_pieces.size() && o1_pieces[decided]["verdict"] != "overlapping") ++decided;
     REQUIRE((decided > 0 && decided < o1_pieces.size()));
+    REQUIRE(o1_pieces[0]["verdict"] == "overlapping_at_point");
+    Document outside = o1;  // the point must lie in its piece
+    outside["claim"]["data"]["pieces"][0]["at"] = o1_pieces[1]["p"]["hi"];
+    CHECK(verify_document(outside).path == "claim.data.pieces[0].at");
+    Document minkowski = o1;  // at p = 1/2 itself e1 - e2 - e3 has norm exactly 2: no overlap
+    minkowski["claim"]["data"]["pieces"][0]["at"] = "1/2";
+    report = verify_document(minkowski);
+    CHECK(report.verdict == Verdict::invalid);
+    CHECK(report.path.rfind("claim.data.pieces[0].witness", 0) == 0);
+    Document whole = o1;  // a point refutation is no refutation of the whole piece
+    whole["claim"]["data"]["pieces"][0]["verdict"] = "overlapping";
+    CHECK(verify_document(whole).path.rfind("claim.data.pieces[0].witness", 0) == 0);
     Document norm = o1;
     Document& witness = norm["claim"]["data"]["pieces"][decided]["witness"]["norm"];
     witness["hi"] = tamper_inward(witness["hi"].get<std::string>(), false);
     CHECK(verify_document(norm).path == "claim.data.pieces[" + std::to_string(decided) + "].witness.norm");
     Document broken = o1;
-    broken["proof"]["pieces"][decided - 1]["parameters"] = nullptr;
+    broken["proof"]["pieces"][decided - 1]["parameters"] = nullptr;  // claimed itself: rejected there
+    CHECK(verify_document(broken).path == "proof.pieces[" + std::to_string(decided - 1) + "].parameters");
+    broken["claim"]["data"]["pieces"][decided - 1] = Document{{"p", o1_pieces[decided - 1]["p"]}, {"verdict", "undecided"}, {"reason", "test"}};
     CHECK(verify_document(broken).path == "proof.pieces[" + std::to_string(decided) + "].parameters");
     Document swapped = o1;  // the box of another piece: no unique root for this piece's p, or no link
     swapped["proof"]["pieces"][decided]["parameters"] = o1["proof"]["pieces"][o1_pieces.size() - 1]["parameters"];
@@ -358,8 +351,8 @@ TEST_CASE("audit and check-lattice --family --certificate on the command line") 
     std::size_t files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(folder)) files += entry.is_regular_file();
     CHECK(files == 1);
-    // Nothing decided (O1 next to p = 1/2, where e1 - e2 - e3 has norm 2): exit 4, no file.
-    CHECK(exit_status("audit --family O1 --p-range 0.5:0.5005 --pieces 2 --depth 0 --certificate " + none + out) == 4);
+    // Nothing decided (O0 on one piece holding p*_o, where (0, 0, 4c) has norm 2): exit 4, no file.
+    CHECK(exit_status("audit --family O0 --p-range 0.7924812:0.7924813 --pieces 1 --depth 0 --certificate " + none + out) == 4);
     CHECK(!std::filesystem::exists(none));
     CHECK(exit_status("audit --certificate " + none + out) == 2);
     CHECK(exit_status("audit --family O1 --second-root --certificate " + none + out) == 2);

@@ -3,7 +3,8 @@
 //    at one exact p, the family's lattice is a packing with N contacts, or overlaps (witness);
 //  - "audit" (`superpack audit --family F --certificate FILE`): pieces [lo, hi] of p with
 //    exact rational ends covering a range, each with a verdict valid for every p of the piece
-//    (undecided pieces listed with their reason; they prove nothing).
+//    (undecided pieces listed with their reason; they prove nothing). O1 pieces whose audit
+//    refuted the packing only at the piece's midpoint are "overlapping_at_point" (that one p).
 // The proofs embed the family's parameter proof (family_parameter_proof) and the enumeration
 // bound with the contact vectors; the checker redoes the enumeration on its own basis.
 #pragma once
@@ -23,8 +24,8 @@ Json family_lattice_check_certificate(const FamilyLattice<typename Field::Interv
 // branch is identified by continuation from Minkowski's lattice at p = 1/2).
 Json audit_certificate(const AuditResult& result);
 
-// How many pieces are decided (packing or overlapping), given an audit certificate or its
-// claim data.
+// How many pieces prove something (packing, overlapping, or overlapping_at_point), given an
+// audit certificate or its claim data.
 std::size_t decided_pieces(const Json& certificate);
 
 }  // namespace superpack

@@ -1,0 +1,47 @@
+// Tampering helpers for the certificate tests: find every exact bound of a document and move
+// one inward by a single digit (a changed claim or proof step the checker must reject).
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace certificate_tamper {
+
+using Document = nlohmann::json;
+
+// Every exact interval {"lo", "hi", "decimal"} under `node`, as JSON pointers to its two ends
+// (exact intervals carry a decimal text, NOTES.md 8.1; rational ranges such as a piece's p do not).
+inline void collect_bounds(const Document& node, const std::string& pointer, std::vector<std::string>& bounds) {
+    if (node.is_object()) {
+        if (node.contains("lo") && node.contains("hi") && node.contains("decimal") && node["lo"].is_string()) {
+            bounds.push_back(pointer + "/lo");
+            bounds.push_back(pointer + "/hi");
+            return;
+        }
+        for (const auto& [key, value] : node.items()) collect_bounds(value, pointer + "/" + key, bounds);
+    } else if (node.is_array()) {
+        for (std::size_t k = 0; k < node.size(); ++k) collect_bounds(node[k], pointer + "/" + std::to_string(k), bounds);
+    }
+}
+
+// Changes the leading digit of the mantissa so that the bound moves inward (a lower end up,
+// an upper end down): "5*2^-3" as a lower end becomes "6*2^-3", as an upper end "4*2^-3".
+inline std::string tamper_inward(const std::string& text, bool lower) {
+    if (text == "0") return lower ? "1" : "-1";
+    const std::size_t star = text.find('*');
+    std::string mantissa = text.substr(0, star);
+    const std::string rest = star == std::string::npos ? "" : text.substr(star);
+    const bool negative = mantissa[0] == '-';
+    const std::size_t lead = negative ? 1 : 0;
+    const bool grow = lower != negative;  // make |m| larger?
+    if (grow) {
+        if (mantissa[lead] == '9') mantissa.insert(lead, "1");
+        else ++mantissa[lead];
+    } else {
+        --mantissa[lead];
+        while (mantissa.size() > lead + 1 && mantissa[lead] == '0') mantissa.erase(lead, 1);
+    }
+    return mantissa + rest;
+}
+
+}  // namespace certificate_tamper
