@@ -34,7 +34,7 @@ std::string range_text(const AuditPiece& piece) {
     return "[" + decimal_or_fraction_text(piece.lo) + ", " + decimal_or_fraction_text(piece.hi) + "]";
 }
 
-// Writes nothing unless some piece is decided (exit 4), and nothing half-written (atomic).
+// Writes nothing unless some piece has a certified verdict (exit 4), and nothing half-written (atomic).
 void write_audit_certificate(const std::string& path, const AuditResult& result) {
     Json certificate;
     try {
@@ -50,7 +50,7 @@ void write_audit_certificate(const std::string& path, const AuditResult& result)
         throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
     }
     std::cerr << "audit: certificate " << path << " (" << decided_pieces(certificate) << " of " << result.pieces.size()
-              << " pieces decided)\n";
+              << " pieces with a certified verdict)\n";
 }
 
 int run(const AuditOptions& options) {
