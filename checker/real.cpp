@@ -107,7 +107,8 @@ Real abs(const Real& x) {
 
 Real pow_abs(const Real& x, const Real& y) {
     if (mpfr_zero_p(y.lo()) && mpfr_zero_p(y.hi())) return integer(1, x.precision());
-    if (!positive(y)) throw std::domain_error("pow_abs: exponent may be <= 0");
+    // y = 0 is allowed where |x| > 0 (x^0 = 1); 0^y needs y > 0 (power_at checks it).
+    if (mpfr_sgn(y.lo()) < 0) throw std::domain_error("pow_abs: exponent may be < 0");
     const Real a = abs(x);
     return hull(power_at(a.lo(), y), power_at(a.hi(), y));
 }

@@ -46,8 +46,8 @@ Real operator*(long n, const Real& a);
 Real exp(const Real& x);
 Real log(const Real& x);  // x > 0
 Real abs(const Real& x);
-// |x|^y for a nonnegative exponent y (the point 0 gives 1): endpoint-wise, as x -> |x|^y is
-// monotone on each side of 0.
+// |x|^y for a nonnegative exponent y (the point 0 gives 1; an exponent interval reaching 0
+// needs |x| > 0): endpoint-wise, as x -> |x|^y is monotone on each side of 0.
 Real pow_abs(const Real& x, const Real& y);
 // sign(x) |x|^y, the derivative kernel of |x|^(y+1); [-M, M] when x may change sign.
 Real pow_signed(const Real& x, const Real& y);

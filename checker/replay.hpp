@@ -33,8 +33,9 @@ struct KrawczykReplay {
 KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_iterations);
 
 // Interval Newton for f: R -> R from a stored box X and point M in X: checks 0 not in f'(X)
-// and N(X) = M - f(M)/f'(X) in int X (rejecting at `path` otherwise, and comparing with the
-// stored derivative and image when given), then iterates to a tight box around the root.
+// and N(X) = M - f(M)/f'(X) in int X, or in the interior of a later iterate X_k = N(X_(k-1)) ∩
+// X_(k-1) (rejecting at `path` otherwise, and comparing with the stored derivative and first
+// image when given), then iterates to a tight box around the root.
 Real replay_newton(Context& context, const std::function<Real(const Real&)>& f,
                    const std::function<Real(const Real&)>& derivative, const Real& box, const Real& center,
                    const Real* stored_derivative, const Real* stored_image, const std::string& path);

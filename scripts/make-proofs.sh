@@ -86,3 +86,37 @@ superdisk 0.75 superdisk-optimum-p0.75
 superdisk 1.25 superdisk-optimum-p1.25
 superdisk 2 superdisk-optimum-p2
 superdisk 1 superdisk-optimum-p1
+
+# Issue 7, audit and family lattice-check certificates (NOTES.md 8.4).
+# family_check FAMILY P NAME: the family-lattice-check certificate of one family at one p.
+family_check() {
+    local family=$1 p=$2 name=$3
+    local file="$root/proofs/$name.json"
+    local status=0
+    "$superpack" check-lattice --family "$family" --p "$p" --certificate "$file" >/dev/null || status=$?
+    if [ "$status" -ne 0 ]; then echo "check-lattice --family failed ($status) for $name" >&2; exit "$status"; fi
+    "$superpack" verify "$file" >/dev/null
+    echo "proofs/$name.json"
+}
+
+# audit FAMILY NAME: the audit certificate of one family over its claimed range (the audit's
+# detail file goes to a temporary folder; the certificate is the file kept).
+audit() {
+    local family=$1 name=$2
+    local file="$root/proofs/$name.json" scratch
+    scratch=$(mktemp -d)
+    "$superpack" audit --family "$family" --output-directory "$scratch" --certificate "$file" >/dev/null 2>&1
+    rm -rf "$scratch"
+    "$superpack" verify "$file" >/dev/null
+    echo "proofs/$name.json"
+}
+
+# C0 at p = 2 and O0 at p = 0.85 (packings, 12 contacts), O1 at p = 0.6 (not a packing,
+# witness e1 - e2 - e3: NOTES.md 9), and the four families over their claimed ranges.
+family_check C0 2 lattice-C0-p2
+family_check O0 0.85 lattice-O0-p0.85
+family_check O1 0.6 lattice-O1-p0.6-overlapping
+audit C0 audit-C0-p1-10
+audit C1 audit-C1-p1-10
+audit O0 audit-O0-p0.792481-1
+audit O1 audit-O1-p0.5-0.792482

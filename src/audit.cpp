@@ -96,6 +96,7 @@ AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
         piece.reason = "family not certified: " + lattice.message;
         return piece;
     }
+    piece.lattice = std::make_shared<const FamilyLattice<DInterval>>(lattice);
     piece.detail["basis"] = basis_json(*basis);
     const std::vector<Coefficients> identities = family_contact_triples(family);
     Json identity_json = Json::array();
@@ -105,6 +106,7 @@ AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
         return std::find(identities.begin(), identities.end(), c) != identities.end();
     });
     piece.detail["check"] = lattice_check_json(check, true);
+    piece.check = std::make_shared<const LatticeCheck<DInterval>>(check);
     piece.verdict = check.verdict;
     piece.contacts = check.contacts();
     piece.reason = check.reason;

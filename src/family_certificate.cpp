@@ -65,6 +65,21 @@ const char* family_formula(Family family) {
 
 }  // namespace
 
+template <class I>
+Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p) {
+    if (lattice.status != FamilyStatus::certified)
+        throw std::runtime_error(std::string("certificate: ") + to_string(lattice.family) + " is not certified at this p");
+    switch (lattice.family) {
+        case Family::C0:
+        case Family::C1: return cubic_proof(lattice, p);
+        case Family::O0:
+            return Json{{"kind", "evaluation"},
+                        {"reason", "no equation to solve: c, the basis of Eq. (5), V_sb and phi are direct evaluations at p"}};
+        case Family::O1: return o1_proof(lattice, p);
+    }
+    throw std::logic_error("unknown family");
+}
+
 template <class Field>
 Json family_certificate(const FamilyLattice<typename Field::Interval>& lattice, const Rational& p, const Field& field,
                         long digits) {
@@ -87,19 +102,12 @@ Json family_certificate(const FamilyLattice<typename Field::Interval>& lattice, 
                              {"determinant", exact_interval_json(*lattice.determinant)},
                              {"phi", exact_interval_json(*lattice.phi)}}}};
     Json inputs{{"family", family}, {"p", rational_text(p)}, {"p_decimal", decimal_or_fraction_text(p)}};
-    Json proof;
-    switch (lattice.family) {
-        case Family::C0:
-        case Family::C1: proof = cubic_proof(lattice, p_interval); break;
-        case Family::O0:
-            proof = Json{{"kind", "evaluation"},
-                         {"reason", "no equation to solve: c, the basis of Eq. (5), V_sb and phi are direct evaluations at p"}};
-            break;
-        case Family::O1: proof = o1_proof(lattice, p_interval); break;
-    }
+    const Json proof = family_parameter_proof(lattice, p_interval);
     return certificate_document(certificate_head("density", field, digits), claim, inputs, proof);
 }
 
+template Json family_parameter_proof(const FamilyLattice<DInterval>&, const DInterval&);
+template Json family_parameter_proof(const FamilyLattice<Ball>&, const Ball&);
 template Json family_certificate(const FamilyLattice<DInterval>&, const Rational&, const DoubleField&, long);
 template Json family_certificate(const FamilyLattice<Ball>&, const Rational&, const BallField&, long);
 

@@ -7,10 +7,11 @@
 
 namespace superpack::test {
 
-// Every {"lo", "hi"} string in the claim's data and in the proof, as JSON pointers.
+// Every exact interval {"lo", "hi", "decimal"} under `node`, as JSON pointers to its two ends
+// (exact intervals carry a decimal text, NOTES.md 8.1; rational ranges such as a piece's p do not).
 inline void collect_bounds(const nlohmann::json& node, const std::string& pointer, std::vector<std::string>& bounds) {
     if (node.is_object()) {
-        if (node.contains("lo") && node.contains("hi") && node["lo"].is_string()) {
+        if (node.contains("lo") && node.contains("hi") && node.contains("decimal") && node["lo"].is_string()) {
             bounds.push_back(pointer + "/lo");
             bounds.push_back(pointer + "/hi");
             return;

@@ -3,6 +3,7 @@
 // witness vector, or undecided with the reason) that holds for every p in the piece.
 #pragma once
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,10 @@ struct AuditPiece {
     std::size_t contacts = 0;
     std::optional<Coefficients> witness;
     Json detail;      // parameter boxes, basis, coefficient bound, vectors and norm enclosures
+    // The certified family at the piece's p interval and the lattice check behind the verdict
+    // (absent when the family was not certified): what an audit certificate is written from.
+    std::shared_ptr<const FamilyLattice<DInterval>> lattice;
+    std::shared_ptr<const LatticeCheck<DInterval>> check;
 };
 
 // Which lattice of a family is audited: the published one, or (O1 only) the other real root

@@ -6,6 +6,13 @@
 
 namespace superpack {
 
+// The proof that fixes the family's parameters at p (a point, or an interval of p for which
+// the lattice was certified by enclose_family_at): the proof tree of a family-lattice
+// certificate, which other claim kinds embed (family-lattice-check, audit).
+// Throws std::runtime_error unless lattice.status is certified.
+template <class I>
+Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p);
+
 // Throws std::runtime_error unless lattice.status is certified (only proofs are certified).
 template <class Field>
 Json family_certificate(const FamilyLattice<typename Field::Interval>& lattice, const Rational& p,

@@ -1,4 +1,5 @@
 // superpack audit [--family F] [--p-range a:b] [--second-root] [--pieces N] [--depth D] [--json]
+//                [--certificate FILE] (one family, the published lattice)
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -6,13 +7,14 @@
 #include "common.hpp"
 #include "superpack/atomic_file.hpp"
 #include "superpack/audit.hpp"
+#include "superpack/audit_certificate.hpp"
 
 namespace superpack::cli {
 
 namespace {
 
 struct AuditOptions {
-    std::string family, p_range, output_directory = "out";
+    std::string family, p_range, output_directory = "out", certificate;
     bool second_root = false, json = false;
     int pieces = 0, depth = -1;  // 0 / -1: the family's default
 };
@@ -32,11 +34,32 @@ std::string range_text(const AuditPiece& piece) {
     return "[" + decimal_or_fraction_text(piece.lo) + ", " + decimal_or_fraction_text(piece.hi) + "]";
 }
 
+// Writes nothing unless some piece has a certified verdict (exit 4), and nothing half-written (atomic).
+void write_audit_certificate(const std::string& path, const AuditResult& result) {
+    Json certificate;
+    try {
+        certificate = audit_certificate(result);
+    } catch (const InputError& error) {
+        throw Failure(exit_usage, std::string("audit: no certificate written: ") + error.what());
+    } catch (const std::runtime_error& error) {
+        throw Failure(exit_undecided, std::string("audit: no certificate written: ") + error.what());
+    }
+    try {
+        write_certificate(path, certificate);
+    } catch (const std::runtime_error& error) {
+        throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+    }
+    std::cerr << "audit: certificate " << path << " (" << decided_pieces(certificate) << " of " << result.pieces.size()
+              << " pieces with a certified verdict)\n";
+}
+
 int run(const AuditOptions& options) {
     require_rounding_self_test();
     std::vector<Family> families = options.family.empty() ? all_families() : std::vector{parse_family(options.family)};
     if (options.second_root && (families.size() != 1 || families[0] != Family::O1))
         throw Failure(exit_usage, "--second-root needs --family O1");
+    if (!options.certificate.empty() && (families.size() != 1 || options.second_root))
+        throw Failure(exit_usage, "--certificate needs one --family and the published lattice (no --second-root)");
     Json document = header_json("audit", DoubleField{}, 15);
     Json audits = Json::array();
     for (Family family : families) {
@@ -55,6 +78,7 @@ int run(const AuditOptions& options) {
         Json full = header_json("audit", DoubleField{}, 15);
         full.update(audit_json(result));
         write_atomically(file, full.dump(1) + "\n");
+        if (!options.certificate.empty()) write_audit_certificate(options.certificate, result);
         const Json summary = audit_json(result);
         audits.push_back(Json{{"family", summary["family"]}, {"lattice", summary["lattice"]}, {"range", summary["range"]},
                               {"range_note", summary["range_note"]}, {"pieces", result.pieces.size()},
@@ -93,6 +117,8 @@ void add_audit(CLI::App& app) {
     command->add_option("--depth", options->depth, "bisections of an undecided piece (default 12; O1: 3)");
     command->add_option("--output-directory", options->output_directory, "where audit-<family>.json goes (default out)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->add_option("--certificate", options->certificate,
+                        "with one --family: write a certificate of the piece verdicts (replay it with `superpack verify FILE`)");
     command->callback([options] { run(*options); });
 }
 

@@ -1,8 +1,9 @@
 // superpack check-lattice --p P (--basis "a,b,c; d,e,f; g,h,i" | --family F) [--digits D] [--json]
-//                         [--certificate FILE] (exact basis only)
+//                         [--certificate FILE]
 #include <memory>
 
 #include "common.hpp"
+#include "superpack/audit_certificate.hpp"
 #include "superpack/decimal.hpp"
 #include "superpack/lattice.hpp"
 #include "superpack/lattice_certificate.hpp"
@@ -42,11 +43,17 @@ void print_table(const LatticeCheck<I>& check, const std::optional<I>& phi) {
               << ", |c| <= " << check.coefficient_bound[2] << "\n";
 }
 
+void write_or_fail(const std::string& path, const Json& certificate) {
+    try {
+        write_certificate(path, certificate);
+    } catch (const std::runtime_error& error) {
+        throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+    }
+}
+
 int run(const CheckLatticeOptions& options) {
     if (options.basis.empty() == options.family.empty())
         throw Failure(exit_usage, "check-lattice: give exactly one of --basis and --family");
-    if (!options.certificate.empty() && options.basis.empty())
-        throw Failure(exit_usage, "check-lattice: --certificate needs --basis (family certificates: superpack density)");
     const Rational p = parse_p(options.p);
     if (!options.certificate.empty()) require_rounding_self_test();
     return with_field(options.digits, [&](const auto& field, long digits) {
@@ -62,19 +69,15 @@ int run(const CheckLatticeOptions& options) {
             check = check_family_lattice(lattice, field.rational(p));
             phi = lattice.phi;
             document["family"] = to_string(family);
+            if (!options.certificate.empty() && check.verdict != Verdict::undecided)
+                write_or_fail(options.certificate, family_lattice_check_certificate(lattice, check, p, field, digits));
         } else {
             const Basis<Rational> basis = parse_basis(options.basis);
             check = check_exact_lattice(basis, p, field);
             phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field)));
             document["basis"] = options.basis;
-            if (!options.certificate.empty() && check.verdict != Verdict::undecided) {
-                const Json certificate = lattice_certificate(check, basis, p, field, digits);
-                try {
-                    write_certificate(options.certificate, certificate);
-                } catch (const std::runtime_error& error) {
-                    throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
-                }
-            }
+            if (!options.certificate.empty() && check.verdict != Verdict::undecided)
+                write_or_fail(options.certificate, lattice_certificate(check, basis, p, field, digits));
         }
         if (options.json) {
             document.update(lattice_check_json(check, false));
@@ -100,7 +103,7 @@ void add_check_lattice(CLI::App& app) {
     command->add_option("--digits", options->digits, "significant digits (Arb balls); default: binary64 intervals");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_option("--certificate", options->certificate,
-                        "with --basis: write a certificate of the verdict (replay it with `superpack verify FILE`)");
+                        "write a certificate of the verdict (replay it with `superpack verify FILE`); nothing when undecided");
     command->callback([options] { run(*options); });
 }
 

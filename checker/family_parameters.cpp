@@ -1,0 +1,117 @@
+#include "checker/family_parameters.hpp"
+
+namespace superpack_checker {
+
+namespace {
+
+System one_dimensional(const CubicEquation& equation) {
+    return {[equation](const Box& x) { return std::vector<Real>{equation.value(x[0])}; },
+            [equation](const Box& x) { return std::vector<std::vector<Real>>{{equation.derivative(x[0])}}; }};
+}
+
+// C0, C1: s is the unique root in the Newton box (for every p of the interval), and the
+// partition of [0, lower end of that box] holds no root, so s is the smallest positive root.
+FamilyParameters replay_cubic(Context& context, const Json& proof, const std::string& path, bool c1, const Real& p) {
+    const CubicEquation equation{c1, p};
+    if (context.string_at(proof, "kind", path) != "all") context.malformed(path + ".kind", "expected \"all\"");
+    const Json& cases = context.member(proof, "cases", path);
+    if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
+    // A missing case is a gap in the proof (invalid), not a damaged file.
+    context.require(cases.size() == 2, path + ".cases", "expected two cases: a Newton leaf and a partition");
+    const std::string newton_path = path + ".cases[0]";
+    const Json& newton = cases[0];
+    if (context.string_at(newton, "kind", newton_path) != "newton") context.malformed(newton_path + ".kind", "expected newton");
+    const Real box = context.box(context.member(newton, "box", newton_path), newton_path + ".box").at(0);
+    const Real center = context.box(context.member(newton, "midpoint", newton_path), newton_path + ".midpoint").at(0);
+    const Real derivative = context.box(context.member(newton, "derivative", newton_path), newton_path + ".derivative").at(0);
+    const Real image = context.box(context.member(newton, "image", newton_path), newton_path + ".image").at(0);
+    const Real stored_root = context.box(context.member(newton, "root", newton_path), newton_path + ".root").at(0);
+    const Real s = replay_newton(
+        context, [&](const Real& x) { return equation.value(x); }, [&](const Real& x) { return equation.derivative(x); },
+        box, center, &derivative, &image, newton_path);
+    context.require(subset(s, stored_root), newton_path + ".root",
+                    "the stored root box " + text(stored_root) + " does not hold the root " + text(s));
+    context.require(positive(s), newton_path + ".root", "the root may not be positive");
+
+    const std::string below_path = path + ".cases[1]";
+    const System system = one_dimensional(equation);
+    const Box covered = check_partition(context, cases[1], below_path, [&](const Json& leaf, const Box& piece, const std::string& at) {
+        check_root_leaf(context, system, leaf, piece, at, nullptr);
+        context.require(context.string_at(leaf, "kind", at) != "krawczyk" || context.string_at(leaf, "status", at) == "none",
+                        at, "a root below the Newton box: s would not be the smallest positive root");
+    });
+    context.current_step = below_path;
+    context.require(covered.size() == 1 && mpfr_sgn(covered[0].lo()) <= 0 && mpfr_cmp(covered[0].hi(), box.lo()) >= 0,
+                    below_path + ".box", "the root-free partition does not cover [0, lower end of the Newton box]");
+    const Real t = equation.shift();
+    return {{{"s", s}}, {{"t", t}, {"s", s}}, c1 ? c1_basis(s, t) : c0_basis(s, t)};
+}
+
+FamilyParameters replay_o0(Context& context, const Json& proof, const std::string& path, const Real& p) {
+    if (context.string_at(proof, "kind", path) != "evaluation") context.malformed(path + ".kind", "expected \"evaluation\"");
+    const Real c = o0_height(p);
+    return {{{"c", c}}, {{"c", c}}, o0_basis(c)};
+}
+
+// O1: the pieces partition [0,1] x [-1,1], which holds every root of Eq. 12 with q >= 0; the
+// roots of `unique` pieces are distinct, and (q, s) is the one with the largest s (the
+// Minkowski branch, which exists for p < ln3/ln4).
+FamilyParameters replay_o1(Context& context, const Json& proof, const std::string& path, const Real& p,
+                           const std::string& p_path) {
+    const System system = octahedral_system(p);
+    if (context.string_at(proof, "kind", path) != "all") context.malformed(path + ".kind", "expected \"all\"");
+    const Json& cases = context.member(proof, "cases", path);
+    if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
+    context.require(cases.size() == 1, path + ".cases", "expected one case: the partition");
+    const std::string partition_path = path + ".cases[0]";
+    std::vector<Box> roots;
+    const Box covered = check_partition(context, cases[0], partition_path, [&](const Json& leaf, const Box& piece, const std::string& at) {
+        if (piece.size() != 2) context.malformed(at + ".box", "expected a (q, s) box");
+        check_root_leaf(context, system, leaf, piece, at, &roots);
+    });
+    context.current_step = partition_path;
+    const mpfr_prec_t precision = p.precision();
+    context.require(covered.size() == 2 && subset(hull(integer(0, precision), integer(1, precision)), covered[0]) &&
+                        subset(hull(integer(-1, precision), integer(1, precision)), covered[1]),
+                    partition_path + ".box", "the partition does not cover [0,1] x [-1,1]");
+    for (std::size_t a = 0; a < roots.size(); ++a)
+        for (std::size_t b = a + 1; b < roots.size(); ++b)
+            context.require(disjoint(roots[a], roots[b]), partition_path, "two pieces may hold the same root");
+    const Real crossover = log(integer(3, precision)) / log(integer(4, precision));
+    context.require(less(p, crossover), p_path, "p is not below p*_o = ln3/ln4, where the Minkowski branch ends");
+    context.require(!roots.empty(), partition_path, "no root of Eq. (12) with q >= 0");
+    std::size_t largest = 0;
+    for (std::size_t k = 1; k < roots.size(); ++k)
+        if (middle(roots[k][1]) > middle(roots[largest][1])) largest = k;
+    for (std::size_t k = 0; k < roots.size(); ++k)
+        context.require(k == largest || less(roots[k][1], roots[largest][1]), partition_path,
+                        "the root with the largest s is not determined");
+    const Real& q = roots[largest][0];
+    const Real& s = roots[largest][1];
+    const Real l = OctahedralEquations{p}.l();
+    return {{{"l", l}, {"q", q}, {"s", s}}, {{"l", l}, {"q", q}, {"s", s}}, o1_basis(q, s, l)};
+}
+
+}  // namespace
+
+System octahedral_system(const Real& p) {
+    const OctahedralEquations equations{p};
+    return {[equations](const Box& x) {
+                const auto values = equations.value({x[0], x[1]});
+                return std::vector<Real>{values[0], values[1]};
+            },
+            [equations](const Box& x) {
+                const auto j = equations.jacobian({x[0], x[1]});
+                return std::vector<std::vector<Real>>{{j[0][0], j[0][1]}, {j[1][0], j[1][1]}};
+            }};
+}
+
+FamilyParameters replay_family_parameters(Context& context, const std::string& family, const Json& proof,
+                                          const std::string& path, const Real& p, const std::string& p_path) {
+    if (family == "C0" || family == "C1") return replay_cubic(context, proof, path, family == "C1", p);
+    if (family == "O0") return replay_o0(context, proof, path, p);
+    if (family == "O1") return replay_o1(context, proof, path, p, p_path);
+    context.malformed("claim.data.family", "unknown family \"" + family + "\"");
+}
+
+}  // namespace superpack_checker

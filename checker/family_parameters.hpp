@@ -1,0 +1,31 @@
+// Replaying the proof that fixes a family's parameters at p (a point, or an interval of p for
+// the audit): the Newton box and root-free partition of s (C0, C1), a direct evaluation (O0),
+// or the partition of the (q, s) box with the root of largest s (O1). Shared by the claim kinds
+// family-lattice, family-lattice-check and audit, so that each replays the same proof tree.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "checker/equations.hpp"
+#include "checker/replay.hpp"
+
+namespace superpack_checker {
+
+using NamedReals = std::vector<std::pair<std::string, Real>>;
+
+struct FamilyParameters {
+    NamedReals parameters;  // as a claim states them: s (C0, C1); c (O0); l, q, s (O1)
+    NamedReals symbols;     // every symbol of the basis (adds t for C0 and C1)
+    Matrix3 basis;
+};
+
+// Replays the proof node at `path` for `family` at p. Rejects (naming the step) unless it
+// proves the parameters. `p_path` is named when p itself is wrong (O1 needs p < ln3/ln4).
+FamilyParameters replay_family_parameters(Context& context, const std::string& family, const Json& proof,
+                                          const std::string& path, const Real& p, const std::string& p_path);
+
+// Eq. (12) of O1 in the unknowns (q, s), with its Jacobian, for Krawczyk.
+System octahedral_system(const Real& p);
+
+}  // namespace superpack_checker
