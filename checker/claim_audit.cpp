@@ -102,22 +102,12 @@ void check_audit(const Json& claim, Context& context) {
     const Json& inputs = context.member(document, "inputs", "");
     const Json& proof = context.member(document, "proof", "");
     const mpfr_prec_t precision = context.precision();
-    const std::string family = context.string_at(data, "family", "claim.data");
-    context.require(context.string_at(inputs, "family", "inputs") == family, "inputs.family",
-                    "the input family differs from the claim's");
+    const std::string family = read_family(context, data, inputs);
     const Piece range = read_piece_range(context, context.member(data, "range", "claim.data"), "claim.data.range");
     const Piece input_range = read_piece_range(context, context.member(inputs, "range", "inputs"), "inputs.range");
     context.require(input_range.lo == range.lo && input_range.hi == range.hi, "inputs.range",
                     "the input range differs from the claim's");
-    const mpq_class half(1, 2);
-    if (family == "C0" || family == "C1")
-        context.require(range.lo >= 1, "inputs.range", "outside the domain p >= 1 of " + family);
-    else if (family == "O0")
-        context.require(range.lo > half && range.hi <= 1, "inputs.range", "outside the domain 1/2 < p <= 1 of O0");
-    else if (family == "O1")
-        context.require(range.lo >= half, "inputs.range", "outside the domain p >= 1/2 of O1");
-    else
-        context.malformed("claim.data.family", "unknown family \"" + family + "\"");
+    require_family_domain(context, family, range.lo, range.hi, "inputs.range");
     if (context.string_at(proof, "kind", "proof") != "audit") context.malformed("proof.kind", "expected \"audit\"");
     const Json& pieces = context.member(data, "pieces", "claim.data");
     const Json& proofs = context.member(proof, "pieces", "proof");

@@ -32,17 +32,12 @@ void check_family_lattice(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
     const Json& inputs = context.member(document, "inputs", "");
-    const std::string family = context.string_at(data, "family", "claim.data");
+    const std::string family = read_family(context, data, inputs);
     const mpq_class p = context.rational_at(data, "p", "claim.data");
-    context.require(context.string_at(inputs, "family", "inputs") == family, "inputs.family",
-                    "the input family differs from the claim's");
     context.require(context.rational_at(inputs, "p", "inputs") == p, "inputs.p", "the input p differs from the claim's");
-    const mpq_class half(1, 2);
+    require_family_domain(context, family, p, p, "inputs.p");
     const Real p_interval = rational(p, context.precision());
     const Json& proof = context.member(document, "proof", "");
-    if (family == "C0" || family == "C1") context.require(p >= 1, "inputs.p", "outside the domain p >= 1 of " + family);
-    if (family == "O0") context.require(p > half && p <= 1, "inputs.p", "outside the domain 1/2 < p <= 1 of O0");
-    if (family == "O1") context.require(p >= half, "inputs.p", "outside the domain p >= 1/2 of O1");
     const FamilyParameters replayed = replay_family_parameters(context, family, proof, "proof", p_interval, "inputs.p");
     context.current_step = "claim.data";
     check_quantities(context, data, replayed.basis, p_interval, replayed.parameters);

@@ -12,25 +12,14 @@
 #include <set>
 
 #include "checker/replay.hpp"
+#include "checker/triple.hpp"
 
 namespace superpack_checker {
 
 namespace {
 
-using Triple = std::array<long, 3>;
 using Vector = std::array<mpq_class, 3>;
 using Matrix = std::array<Vector, 3>;
-
-std::string triple_text(const Triple& t) {
-    return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
-}
-
-// One of v, -v: the first nonzero coefficient positive.
-bool canonical(const Triple& t) {
-    for (long x : t)
-        if (x != 0) return x > 0;
-    return false;
-}
 
 Matrix read_basis(Context& context, const Json& node, const std::string& path) {
     if (!node.is_array() || node.size() != 3) context.malformed(path, "expected three rows");
@@ -45,16 +34,6 @@ Matrix read_basis(Context& context, const Json& node, const std::string& path) {
         }
     }
     return basis;
-}
-
-Triple read_triple(Context& context, const Json& node, const std::string& path) {
-    if (!node.is_array() || node.size() != 3) context.malformed(path, "expected three integers");
-    Triple t;
-    for (int k = 0; k < 3; ++k) {
-        if (!node[k].is_number_integer()) context.malformed(path, "expected three integers");
-        t[k] = node[k].get<long>();
-    }
-    return t;
 }
 
 Vector cross(const Vector& u, const Vector& w) {

@@ -17,13 +17,13 @@
 #include <vector>
 
 #include "checker/real.hpp"
+#include "checker/triple.hpp"
 
 namespace superpack_checker {
 
 // c_0 + c_1 x_1 + ... + c_n x_n over the family's symbols x_1..x_n (index 0: the constant 1).
 using LinearForm = std::vector<mpq_class>;
 using FormVector = std::array<LinearForm, 3>;
-using Triple = std::array<long, 3>;
 
 struct UnitEquation {
     std::string name;  // where it comes from, e.g. "Eq. 2"

@@ -2,6 +2,26 @@
 
 namespace superpack_checker {
 
+std::string read_family(Context& context, const Json& data, const Json& inputs) {
+    const std::string family = context.string_at(data, "family", "claim.data");
+    context.require(context.string_at(inputs, "family", "inputs") == family, "inputs.family",
+                    "the input family differs from the claim's");
+    return family;
+}
+
+void require_family_domain(Context& context, const std::string& family, const mpq_class& lo, const mpq_class& hi,
+                           const std::string& path) {
+    const mpq_class half(1, 2);
+    if (family == "C0" || family == "C1")
+        context.require(lo >= 1, path, "outside the domain p >= 1 of " + family);
+    else if (family == "O0")
+        context.require(lo > half && hi <= 1, path, "outside the domain 1/2 < p <= 1 of O0");
+    else if (family == "O1")
+        context.require(lo >= half, path, "outside the domain p >= 1/2 of O1");
+    else
+        context.malformed("claim.data.family", "unknown family \"" + family + "\"");
+}
+
 namespace {
 
 System one_dimensional(const CubicEquation& equation) {

@@ -20,6 +20,12 @@ struct FamilyParameters {
     Matrix3 basis;
 };
 
+// The family named in the claim, which the inputs must repeat, and a check that [lo, hi] lies
+// in its domain (C0, C1: p >= 1; O0: 1/2 < p <= 1; O1: p >= 1/2), naming `path` if not.
+std::string read_family(Context& context, const Json& data, const Json& inputs);
+void require_family_domain(Context& context, const std::string& family, const mpq_class& lo, const mpq_class& hi,
+                           const std::string& path);
+
 // Replays the proof node at `path` for `family` at p. Rejects (naming the step) unless it
 // proves the parameters. `p_path` is named when p itself is wrong (O1 needs p < ln3/ln4).
 FamilyParameters replay_family_parameters(Context& context, const std::string& family, const Json& proof,

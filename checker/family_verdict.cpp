@@ -8,13 +8,6 @@ namespace {
 
 using Coordinates = std::array<Real, 3>;
 
-// One of v, -v: the first nonzero coefficient positive.
-bool canonical(const Triple& t) {
-    for (long x : t)
-        if (x != 0) return x > 0;
-    return false;
-}
-
 Coordinates coordinates(const FormVector& v, const std::vector<Real>& values, mpfr_prec_t precision) {
     return {evaluate(v[0], values, precision), evaluate(v[1], values, precision), evaluate(v[2], values, precision)};
 }
@@ -40,20 +33,6 @@ long floor_of_upper(const Real& x) {
 }
 
 }  // namespace
-
-std::string triple_text(const Triple& t) {
-    return "(" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")";
-}
-
-Triple read_triple(Context& context, const Json& node, const std::string& path) {
-    if (!node.is_array() || node.size() != 3) context.malformed(path, "expected three integers");
-    Triple t;
-    for (int k = 0; k < 3; ++k) {
-        if (!node[k].is_number_integer()) context.malformed(path, "expected three integers");
-        t[k] = node[k].get<long>();
-    }
-    return t;
-}
 
 void check_family_verdict(Context& context, const FamilyForms& forms, const NamedReals& symbols, const Real& p,
                           const Json& stated, const std::string& stated_path, const Json& enumeration,

@@ -10,6 +10,7 @@
 
 #include "checker/equations_audit.hpp"
 #include "checker/family_parameters.hpp"
+#include "checker/triple.hpp"
 
 namespace superpack_checker {
 
@@ -20,8 +21,5 @@ namespace superpack_checker {
 void check_family_verdict(Context& context, const FamilyForms& forms, const NamedReals& symbols, const Real& p,
                           const Json& stated, const std::string& stated_path, const Json& enumeration,
                           const std::string& enumeration_path);
-
-std::string triple_text(const Triple& t);
-Triple read_triple(Context& context, const Json& node, const std::string& path);
 
 }  // namespace superpack_checker

@@ -10,12 +10,15 @@
 #include "checker/verifier.hpp"
 #include "superpack/superdisk_certificate.hpp"
 #include "support.hpp"
+#include "tamper.hpp"
 
 namespace {
 
 using superpack_checker::Verdict;
 using superpack_checker::verify_document;
 using Document = nlohmann::json;
+using superpack::test::collect_bounds;
+using superpack::test::tamper_inward;
 
 // A certificate built in the process. A loose stopping rule keeps it small (a few dozen
 // pieces), so that the tamper loops replay it hundreds of times within seconds; the proof
@@ -36,39 +39,6 @@ std::vector<std::string> superdisk_proof_files() {
         if (entry.path().filename().string().rfind("superdisk-", 0) == 0) files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
     return files;
-}
-
-// Every {"lo", "hi"} string under `node`, as JSON pointers.
-void collect_bounds(const Document& node, const std::string& pointer, std::vector<std::string>& bounds) {
-    if (node.is_object()) {
-        if (node.contains("lo") && node.contains("hi") && node["lo"].is_string()) {
-            bounds.push_back(pointer + "/lo");
-            bounds.push_back(pointer + "/hi");
-            return;
-        }
-        for (const auto& [key, value] : node.items()) collect_bounds(value, pointer + "/" + key, bounds);
-    } else if (node.is_array()) {
-        for (std::size_t k = 0; k < node.size(); ++k) collect_bounds(node[k], pointer + "/" + std::to_string(k), bounds);
-    }
-}
-
-// Changes the leading digit of the mantissa so that the bound moves inward (a lower end up,
-// an upper end down), as in tests/test_certificate.cpp.
-std::string tamper_inward(const std::string& text, bool lower) {
-    if (text == "0") return lower ? "1" : "-1";
-    const std::size_t star = text.find('*');
-    std::string mantissa = text.substr(0, star);
-    const std::string rest = star == std::string::npos ? "" : text.substr(star);
-    const bool negative = mantissa[0] == '-';
-    const std::size_t lead = negative ? 1 : 0;
-    if (lower != negative) {
-        if (mantissa[lead] == '9') mantissa.insert(lead, "1");
-        else ++mantissa[lead];
-    } else {
-        --mantissa[lead];
-        while (mantissa.size() > lead + 1 && mantissa[lead] == '0') mantissa.erase(lead, 1);
-    }
-    return mantissa + rest;
 }
 
 // The enclosure at `pointer` of the document as an MPFI interval at 256 bits.
