@@ -251,8 +251,10 @@ DInterval enclose_log(const DInterval& x) {
                      log_narrow(DInterval(x.upper()), high_exponent).upper());
 }
 
+// Half the narrow width, so that the reduced argument (x + 1 or x - m, rounded outward) stays
+// within 1/16 + 2^-20 of its Taylor centre, as the remainder bound requires.
 bool gamma_series_applies(const DInterval& x) {
-    return narrow(x) && x.lower() >= power_of_two(-4) && x.upper() < 8 &&
+    return x.upper() - x.lower() <= kNarrowWidth / 2 && x.lower() >= power_of_two(-4) && x.upper() < 8 &&
            std::floor(x.lower()) == std::floor(x.upper());
 }
 

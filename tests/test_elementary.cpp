@@ -119,6 +119,19 @@ TEST_CASE("narrow and wide interval arguments hold the values at both ends") {
     }
 }
 
+TEST_CASE("Gamma at the edges of the series' range: widest narrow arguments and the ends of [1/16, 8)") {
+    // Each reduction (x + 1 below 1, x - m above 2) must keep the argument near its centre.
+    for (double lo : {1.0 / 16, 0.9999990463256836, 1.9999990463256836, 7.9999990463256836, 0.5, 1.5, 3.5}) {
+        for (int shift : {20, 21, 22, 40}) {
+            const double hi = std::min(lo + std::ldexp(1.0, -shift), 7.999999999999999);
+            INFO("x = [" << lo << ", " << hi << "]");
+            const DInterval g = gamma(DInterval(lo, hi));
+            REQUIRE(encloses(g, mpfr_gamma, lo));
+            REQUIRE(encloses(g, mpfr_gamma, hi));
+        }
+    }
+}
+
 TEST_CASE("directed + - * / sqrt are the exact roundings down and up") {
     std::mt19937_64 random(3);
     detail::rounded_arith_outward rounding;
