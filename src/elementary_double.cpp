@@ -39,7 +39,6 @@ struct Tables {
     DInterval ln2_low;          // ln2 - ln2_high
     double step_high;           // ln2/256 to 33 bits, exactly
     DInterval step_low;         // ln2/256 - step_high
-    DInterval ln2;
     std::array<DInterval, kExpTable> exp2_fraction;    // 2^(j/256)
     std::array<DInterval, 2 * kLogTable + 1> log_centre;  // log(j/128), j >= 1
     std::array<double, kExpDegree + 1> exp_coefficient;     // 1/k!, rounded to nearest
@@ -49,14 +48,7 @@ struct Tables {
 
 constexpr slong kTableBits = 128;
 
-DInterval to_double(const Ball& x) {
-    mpfr_t lo, hi;
-    mpfr_inits2(53, lo, hi, static_cast<mpfr_ptr>(nullptr));
-    get_bounds(lo, hi, x);
-    const DInterval result(mpfr_get_d(lo, MPFR_RNDD), mpfr_get_d(hi, MPFR_RNDU));
-    mpfr_clears(lo, hi, static_cast<mpfr_ptr>(nullptr));
-    return result;
-}
+DInterval to_double(const Ball& x) { return from_arb(x.get()); }
 
 double nearest(const Rational& q) {
     mpfr_t x;
@@ -80,7 +72,6 @@ const Tables& tables() {
         Tables t;
         const BallField b{kTableBits};
         const Ball ln2 = log(b.integer(2));
-        t.ln2 = to_double(ln2);
         std::tie(t.ln2_high, t.ln2_low) = split(ln2, kLn2Bits);
         std::tie(t.step_high, t.step_low) = split(ln2 / b.integer(kExpTable), kStepBits);
         for (int j = 0; j < kExpTable; ++j) t.exp2_fraction[j] = to_double(exp(b.rational(Rational(j, kExpTable)) * ln2));
@@ -134,13 +125,6 @@ constexpr int kLogExponentLimit = 1000;
 constexpr double kNarrowWidth = 0x1p-20;
 
 bool narrow(const DInterval& x) { return x.upper() - x.lower() <= kNarrowWidth; }
-
-// The rare arguments whose results leave the normal range go to Arb.
-template <class Function>
-DInterval through_arb(const DInterval& x, const Function& f) {
-    const BallField b{64};
-    return to_double(f(from_doubles(b.integer(0), x.lower(), x.upper())));
-}
 
 // The two series below run in plain round-to-nearest binary64 (the start-up self-test checks
 // the mode), with an error bound proved once for the whole reduced range (NOTES.md 1.4)
@@ -233,7 +217,7 @@ DInterval log_gamma_narrow(const DInterval& y) {
 
 DInterval enclose_exp(const DInterval& x) {
     if (!(std::fabs(x.lower()) <= kExpArgumentLimit && std::fabs(x.upper()) <= kExpArgumentLimit))
-        return through_arb(x, [](const Ball& y) { return exp(y); });
+        return through_arb(x, arb_exp);
     if (narrow(x)) return exp_narrow(x);
     return DInterval(exp_narrow(DInterval(x.lower())).lower(), exp_narrow(DInterval(x.upper())).upper());
 }
@@ -244,7 +228,7 @@ DInterval enclose_log(const DInterval& x) {
     std::frexp(x.lower(), &low_exponent);
     std::frexp(x.upper(), &high_exponent);
     if (std::isinf(x.upper()) || low_exponent < -kLogExponentLimit || high_exponent > kLogExponentLimit)
-        return through_arb(x, [](const Ball& y) { return log(y); });
+        return through_arb(x, arb_log);
     if (low_exponent == high_exponent && narrow(DInterval(x.lower(), x.upper()) * DInterval(power_of_two(1 - low_exponent))))
         return log_narrow(x, low_exponent);
     return DInterval(log_narrow(DInterval(x.lower()), low_exponent).lower(),

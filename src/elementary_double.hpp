@@ -2,9 +2,17 @@
 // bounded in closed form and whose arithmetic is outward rounded: rigorous without a call
 // to libm and without a round trip through Arb for each endpoint (NOTES.md section 1).
 #pragma once
+#include <arb.h>
+
 #include "superpack/interval_double.hpp"
 
 namespace superpack::detail {
+
+// A ball rounded outward to binary64 intervals, and f(x) by Arb at 64 bits so rounded: for
+// the constants of the tables and the rare arguments outside their ranges (interval_double.cpp).
+DInterval from_arb(const arb_t x);
+using ArbFunction = void (*)(arb_t, const arb_t, slong);
+DInterval through_arb(const DInterval& x, ArbFunction f);
 
 // exp(x) and log(x) (x > 0) over an interval x.
 DInterval enclose_exp(const DInterval& x);

@@ -25,6 +25,10 @@ void to_arb(arb_t result, const DInterval& x) {
     arf_clear(hi);
 }
 
+}  // namespace
+
+namespace detail {
+
 DInterval from_arb(const arb_t x) {
     if (!arb_is_finite(x)) return DInterval::whole();
     arf_t lo, hi;
@@ -39,8 +43,6 @@ DInterval from_arb(const arb_t x) {
     return DInterval(down, up);
 }
 
-using ArbFunction = void (*)(arb_t, const arb_t, slong);
-
 DInterval through_arb(const DInterval& x, ArbFunction f) {
     arb_t value;
     arb_init(value);
@@ -51,7 +53,7 @@ DInterval through_arb(const DInterval& x, ArbFunction f) {
     return result;
 }
 
-}  // namespace
+}  // namespace detail
 
 DInterval power_of_positive(const DInterval& x, const DInterval& y) { return exp(y * log(x)); }
 
@@ -70,7 +72,7 @@ DInterval DoubleField::pi() const {
     arb_t value;
     arb_init(value);
     arb_const_pi(value, kArbBits);
-    DInterval result = from_arb(value);
+    DInterval result = detail::from_arb(value);
     arb_clear(value);
     return result;
 }
@@ -84,9 +86,9 @@ DInterval abs(const DInterval& x) { return boost::numeric::abs(x); }
 // library call; anything else goes to Arb's monotonicity-aware evaluation.
 DInterval gamma(const DInterval& x) {
     if (detail::gamma_series_applies(x)) return detail::enclose_gamma_series(x);
-    return through_arb(x, detail::enclose_gamma);
+    return detail::through_arb(x, detail::enclose_gamma);
 }
-DInterval digamma(const DInterval& x) { return through_arb(x, detail::enclose_digamma); }
+DInterval digamma(const DInterval& x) { return detail::through_arb(x, detail::enclose_digamma); }
 
 DInterval lower_point(const DInterval& x) { return DInterval(x.lower()); }
 DInterval upper_point(const DInterval& x) { return DInterval(x.upper()); }
