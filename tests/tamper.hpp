@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "checker/verifier.hpp"
+
 namespace superpack::test {
 
 // Every exact interval {"lo", "hi", "decimal"} under `node`, as JSON pointers to its two ends
@@ -40,6 +42,14 @@ inline std::string tamper_inward(const std::string& text, bool lower) {
         while (mantissa.size() > lead + 1 && mantissa[lead] == '0') mantissa.erase(lead, 1);
     }
     return mantissa + rest;
+}
+
+// The step at which the checker rejects `document`, or "(not rejected: <verdict>)": one
+// comparison asserts both that the file is invalid and where.
+inline std::string rejected_at(const nlohmann::json& document) {
+    const auto report = superpack_checker::verify_document(document);
+    if (report.verdict == superpack_checker::Verdict::invalid) return report.path;
+    return "(not rejected)";
 }
 
 }  // namespace superpack::test

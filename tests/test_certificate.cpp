@@ -18,6 +18,7 @@ using superpack_checker::Verdict;
 using superpack_checker::verify_document;
 using Document = nlohmann::json;
 using superpack::test::collect_bounds;
+using superpack::test::rejected_at;
 using superpack::test::tamper_inward;
 
 Document certificate(superpack::Family family, const std::string& p) {
@@ -93,21 +94,17 @@ TEST_CASE("deleting a case is rejected at that case") {
     // Drop the second case of the first split: the split no longer covers its box.
     Document without_case = original;
     without_case["proof"]["cases"][0]["cases"].erase(1);
-    auto report = verify_document(without_case);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.cases[0].cases");
+    CHECK(rejected_at(without_case) == "proof.cases[0].cases");
     // Replace a split by one of its halves: the parent's cover check fails.
     Document half = original;
     half["proof"]["cases"][0]["cases"][1] = Document(original["proof"]["cases"][0]["cases"][1]["cases"][0]);
-    report = verify_document(half);
+    auto report = verify_document(half);
     CHECK(report.verdict == Verdict::invalid);
     CHECK(report.path.rfind("proof.cases[0].cases[1]", 0) == 0);
     // C0: drop the root-free partition.
     Document cubic = certificate(superpack::Family::C0, "1.5");
     cubic["proof"]["cases"].erase(1);
-    report = verify_document(cubic);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.cases");
+    CHECK(rejected_at(cubic) == "proof.cases");
 }
 
 TEST_CASE("changing p is rejected") {
@@ -119,9 +116,7 @@ TEST_CASE("changing p is rejected") {
     CHECK(report.path.rfind("proof.cases[0]", 0) == 0);  // the Newton step fails first
     Document input_only = certificate(superpack::Family::O0, "0.85");
     input_only["inputs"]["p"] = "43/50";
-    report = verify_document(input_only);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "inputs.p");
+    CHECK(rejected_at(input_only) == "inputs.p");
     Document outside = certificate(superpack::Family::O1, "0.6");
     outside["inputs"]["p"] = outside["claim"]["data"]["p"] = "4/5";  // beyond p*_o = ln3/ln4
     CHECK(verify_document(outside).verdict == Verdict::invalid);
@@ -130,15 +125,13 @@ TEST_CASE("changing p is rejected") {
 TEST_CASE("a failed producer self-test, a foreign format and bad numbers are told apart") {
     Document failed = certificate(superpack::Family::O0, "0.85");
     failed["rounding_self_test"]["passed"] = false;
-    auto report = verify_document(failed);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "rounding_self_test.passed");
+    CHECK(rejected_at(failed) == "rounding_self_test.passed");
     Document foreign = failed;
     foreign["format_version"] = 2;
     CHECK(verify_document(foreign).verdict == Verdict::malformed);
     Document decimal = certificate(superpack::Family::O0, "0.85");
     decimal["claim"]["data"]["phi"]["lo"] = "0.7656";  // a rounded decimal is not an exact endpoint
-    report = verify_document(decimal);
+    auto report = verify_document(decimal);
     CHECK(report.verdict == Verdict::malformed);
     CHECK(report.path == "claim.data.phi");
     Document unknown = certificate(superpack::Family::O0, "0.85");
@@ -236,14 +229,12 @@ TEST_CASE("lattice-check: a lowered coefficient bound, a deleted candidate, a ch
     REQUIRE(original["proof"]["coefficient_bound"] == Document::array({3, 3, 3}));
     Document bound = original;
     bound["proof"]["coefficient_bound"][1] = 2;
-    auto report = verify_document(bound);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.coefficient_bound");
+    CHECK(rejected_at(bound) == "proof.coefficient_bound");
 
     for (std::size_t k : {std::size_t{0}, original["proof"]["candidates"].size() / 2}) {
         Document deleted = original;
         deleted["proof"]["candidates"].erase(k);
-        report = verify_document(deleted);
+        auto report = verify_document(deleted);
         INFO("candidate " << k);
         CHECK(report.verdict == Verdict::invalid);
         CHECK(report.path == "proof.candidates");
@@ -259,19 +250,15 @@ TEST_CASE("lattice-check: a lowered coefficient bound, a deleted candidate, a ch
 
     Document p_both = original;
     p_both["inputs"]["p"] = p_both["claim"]["data"]["p"] = "3/5";
-    report = verify_document(p_both);
+    auto report = verify_document(p_both);
     CHECK(report.verdict == Verdict::invalid);
     CHECK(report.path.rfind("proof.candidates[", 0) == 0);
     Document p_input = original;
     p_input["inputs"]["p"] = "3/5";
-    report = verify_document(p_input);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "inputs.p");
+    CHECK(rejected_at(p_input) == "inputs.p");
     Document p_convex = original;
     p_convex["inputs"]["p"] = p_convex["claim"]["data"]["p"] = "2/5";
-    report = verify_document(p_convex);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "inputs.p");
+    CHECK(rejected_at(p_convex) == "inputs.p");
 
     Document entry_both = original;
     entry_both["inputs"]["basis"][0][0] = entry_both["claim"]["data"]["basis"][0][0] = "3/4";
@@ -280,9 +267,7 @@ TEST_CASE("lattice-check: a lowered coefficient bound, a deleted candidate, a ch
     CHECK(report.path.rfind("proof.", 0) == 0);
     Document entry_input = original;
     entry_input["inputs"]["basis"][2][1] = "-1/2";
-    report = verify_document(entry_input);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "inputs.basis");
+    CHECK(rejected_at(entry_input) == "inputs.basis");
 
     // Overlap: the witness must be certainly below 2; a packing claim over it is refuted.
     const Document overlapping = lattice_certificate("2", overlapping_basis);

@@ -15,6 +15,7 @@ namespace {
 
 using superpack::test::collect_bounds;
 using superpack::test::reference_text;
+using superpack::test::rejected_at;
 using superpack::test::tamper_inward;
 using superpack_checker::Verdict;
 using superpack_checker::verify_document;
@@ -146,25 +147,19 @@ TEST_CASE("cubic crossover: a deleted piece, a changed sign, lemma value or inpu
     // A deleted piece leaves a gap where the next one starts.
     Document deleted = original;
     deleted["proof"]["pieces"].erase(1);
-    auto report = verify(deleted);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.pieces[1].p");
+    CHECK(rejected_at(deleted) == "proof.pieces[1].p");
     Document without_root = original;
     without_root["proof"]["pieces"].erase(root);
-    report = verify(without_root);
+    auto report = verify(without_root);
     CHECK(report.verdict == Verdict::invalid);
     CHECK(report.path == "proof.pieces[" + std::to_string(root) + "].p");
     Document without_last = original;
     without_last["proof"]["pieces"].erase(pieces.size() - 1);
-    report = verify(without_last);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.pieces");
+    CHECK(rejected_at(without_last) == "proof.pieces");
     // The first piece (where g(1) = 0) claimed positive; a piece of the other sign; a second root.
     Document first = original;
     first["proof"]["pieces"][0]["claim"] = "positive";
-    report = verify(first);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.pieces[0]");
+    CHECK(rejected_at(first) == "proof.pieces[0]");
     Document flipped = original;
     flipped["proof"]["pieces"][root + 5]["claim"] = "negative";
     report = verify(flipped);
@@ -180,110 +175,74 @@ TEST_CASE("cubic crossover: a deleted piece, a changed sign, lemma value or inpu
     Document sides = original;
     sides["claim"]["data"]["sign_left"] = "positive";
     sides["claim"]["data"]["sign_right"] = "negative";
-    report = verify(sides);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.sign_right");
+    CHECK(rejected_at(sides) == "claim.data.sign_right");
     Document densest = original;
     densest["claim"]["data"]["densest_left"] = "C1";
-    report = verify(densest);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.densest_left");
+    CHECK(rejected_at(densest) == "claim.data.densest_left");
     // The exact values at p = 1: s_C0 = (2 - sqrt2)/4 is a + b sqrt2 with a = 1/2, b = -1/4.
     Document lemma = original;
     lemma["proof"]["at_start"]["s_C0"]["b"] = "-1/5";
-    report = verify(lemma);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.at_start.s_C0");
+    CHECK(rejected_at(lemma) == "proof.at_start.s_C0");
     // Inputs: another interval (both places, or the input only), a start away from p = 1.
     Document longer = original;
     longer["inputs"]["to"] = longer["claim"]["data"]["to"] = "11";
-    report = verify(longer);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.pieces");
+    CHECK(rejected_at(longer) == "proof.pieces");
     Document input_only = original;
     input_only["inputs"]["to"] = "9";
-    report = verify(input_only);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.to");
+    CHECK(rejected_at(input_only) == "claim.data.to");
     Document start = original;
     start["inputs"]["from"] = start["claim"]["data"]["from"] = "11/10";
-    report = verify(start);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "inputs.from");
+    CHECK(rejected_at(start) == "inputs.from");
 }
 
 TEST_CASE("octahedral crossover and slopes: a deleted case, a changed matrix, verdict or input is rejected") {
     const Document& octahedral = octahedral_certificate();
     Document deleted = octahedral;
     deleted["proof"]["cases"].erase(1);
-    auto report = verify(deleted);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.cases");
+    CHECK(rejected_at(deleted) == "proof.cases");
     Document unimodular = octahedral;
     unimodular["claim"]["data"]["lattice"]["unimodular"][2][2] = "1";
-    report = verify(unimodular);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.lattice.unimodular");
+    CHECK(rejected_at(unimodular) == "claim.data.lattice.unimodular");
     Document basis = octahedral;
     basis["claim"]["data"]["lattice"]["O0"][2][2] = "9/10";  // 2c with c != 1/2
-    report = verify(basis);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.lattice.O0[2][2]");
+    CHECK(rejected_at(basis) == "claim.data.lattice.O0[2][2]");
     Document determinant = octahedral;
     determinant["claim"]["data"]["lattice"]["abs_determinant"] = "5";
-    report = verify(determinant);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.lattice.abs_determinant");
+    CHECK(rejected_at(determinant) == "claim.data.lattice.abs_determinant");
     Document domain = octahedral;
     domain["inputs"]["from"] = "0";
-    report = verify(domain);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "inputs");
+    CHECK(rejected_at(domain) == "inputs");
     // A Newton box beside the root: no root of Eq. (6) there.
     Document moved = octahedral;
     moved["proof"]["cases"][0]["box"]["hi"] = "3*2^-2";
-    report = verify(moved);
+    auto report = verify(moved);
     CHECK(report.verdict == Verdict::invalid);
     CHECK(starts_with(report.path, "proof.cases[0]"));
 
     const Document& slopes = slopes_certificate();
     Document no_root = slopes;
     no_root["proof"]["cases"].erase(1);
-    report = verify(no_root);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.cases");
+    CHECK(rejected_at(no_root) == "proof.cases");
     Document swapped = slopes;
     swapped["proof"]["cases"][0]["family"] = "C1";
-    report = verify(swapped);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "proof.cases[0].family");
+    CHECK(rejected_at(swapped) == "proof.cases[0].family");
     Document at_other_p = slopes;
     at_other_p["inputs"]["p"] = at_other_p["claim"]["data"]["p"] = "11/10";
-    report = verify(at_other_p);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "inputs.p");
+    CHECK(rejected_at(at_other_p) == "inputs.p");
     // a_plus is the larger cubic slope: C0's, not C1's.
     Document family = slopes;
     family["claim"]["data"]["a_plus"]["family"] = "C1";
-    report = verify(family);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.a_plus.family");
+    CHECK(rejected_at(family) == "claim.data.a_plus.family");
     // The paper's printed a_plus made to agree: the checker decides each verdict itself.
     Document agreeing = slopes;
     agreeing["claim"]["data"]["paper"]["a_plus"]["certified_vs_printed"]["as_truncated"] = "agree";
-    report = verify(agreeing);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.paper.a_plus.certified_vs_printed.as_truncated");
+    CHECK(rejected_at(agreeing) == "claim.data.paper.a_plus.certified_vs_printed.as_truncated");
     Document closed = slopes;
     closed["claim"]["data"]["paper"]["a_plus"]["certified_vs_closed_form"] = "agree";
-    report = verify(closed);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.paper.a_plus.certified_vs_closed_form");
+    CHECK(rejected_at(closed) == "claim.data.paper.a_plus.certified_vs_closed_form");
     Document printed = slopes;
     printed["claim"]["data"]["paper"]["a_plus"]["printed"] = "0.1236";
-    report = verify(printed);
-    CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path == "claim.data.paper.a_plus.certified_vs_printed.as_truncated");
+    CHECK(rejected_at(printed) == "claim.data.paper.a_plus.certified_vs_printed.as_truncated");
 }
 
 TEST_CASE("no certificate without a proof") {
