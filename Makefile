@@ -1,17 +1,23 @@
 # Two commands for a newcomer: `make demo` and `make test`. Both install what is missing first.
-BUILD ?= build
-JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
+BUILD  ?= build
+JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
+# CI sets WERROR=ON (.ci/run): warnings fail the build there.
+WERROR ?= OFF
 
-.PHONY: deps build demo test bench proofs clean
+.PHONY: deps configure build demo test bench proofs clean
 
 deps:
 	@scripts/install-deps.sh
 
-build: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+configure: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DSUPERPACK_WERROR=$(WERROR) >/dev/null
+
+build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
+# Only the two executables the report needs, not the tests and benchmarks.
+demo: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target superpack superpack-verify
 	$(BUILD)/superpack report
 
 test: build

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "superpack/audit.hpp"
+#include "superpack/problems/audit.hpp"
 
 using namespace superpack;
 

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "superpack/crossover.hpp"
+#include "superpack/problems/crossover.hpp"
 
 using namespace superpack;
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "superpack/families.hpp"
+#include "superpack/problems/families.hpp"
 
 using namespace superpack;
 

@@ -1,11 +1,11 @@
-// Goal (issue 6): the certified superdisk optimum to width 1e-9 in at most 1 s per p (best of 3 runs).
+// Goal: the certified superdisk optimum to width 1e-9 in at most 1 s per p (best of 3 runs).
 // The time is also given as a ratio to a reference measured in the same run: enclosing the
 // Lambda1 lattice at one p (one Krawczyk proof), so a slower machine shifts both.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 
-#include "superpack/superdisk.hpp"
+#include "superpack/problems/superdisk.hpp"
 
 using namespace superpack;
 

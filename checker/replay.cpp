@@ -7,8 +7,8 @@ namespace superpack_checker {
 
 namespace {
 
-// Floating-point inverse by Gauss-Jordan with partial pivoting: a preconditioner (a guess,
-// STYLE P6); soundness does not depend on it. False when (numerically) singular.
+// Floating-point inverse by Gauss-Jordan with partial pivoting: a preconditioner (a guess);
+// soundness does not depend on it. False when (numerically) singular.
 bool invert(std::vector<std::vector<double>>& a, std::vector<std::vector<double>>& inverse) {
     const std::size_t n = a.size();
     inverse.assign(n, std::vector<double>(n, 0.0));

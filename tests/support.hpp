@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "superpack/families.hpp"
+#include "superpack/problems/families.hpp"
 
 namespace superpack::test {
 

@@ -11,7 +11,7 @@
 #include "checker/equations.hpp"
 #include "checker/equations_audit.hpp"
 #include "checker/verifier.hpp"
-#include "superpack/audit_certificate.hpp"
+#include "superpack/cert/audit_certificate.hpp"
 #include "tamper.hpp"
 #include "support.hpp"
 

@@ -7,7 +7,7 @@
 
 #include "checker/verifier.hpp"
 #include "crossover_reference.hpp"
-#include "superpack/crossover_certificate.hpp"
+#include "superpack/cert/crossover_certificate.hpp"
 #include "support.hpp"
 #include "tamper.hpp"
 

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "checker/verifier.hpp"
-#include "superpack/superdisk_certificate.hpp"
+#include "superpack/cert/superdisk_certificate.hpp"
 #include "support.hpp"
 #include "tamper.hpp"
 

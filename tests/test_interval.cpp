@@ -1,5 +1,5 @@
-// Both interval backends run the same test bodies (STYLE P8).
-#include "superpack/self_test.hpp"
+// Both interval backends run the same test bodies.
+#include "superpack/arith/self_test.hpp"
 #include "support.hpp"
 
 using namespace superpack;

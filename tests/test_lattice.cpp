@@ -7,7 +7,7 @@
 #include <fstream>
 #include <set>
 
-#include "superpack/lattice.hpp"
+#include "superpack/problems/family_lattice_check.hpp"
 #include "support.hpp"
 
 using namespace superpack;

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "support.hpp"
-#include "superpack/superdisk.hpp"
+#include "superpack/problems/superdisk.hpp"
 
 using namespace superpack;
 using namespace superpack::test;

@@ -38,7 +38,7 @@ TEMPLATE_TEST_CASE("superdisk area against mpmath", "", Binary64, Arb128) {
 
 TEST_CASE("the paper's Beta form (Eq. 4) and the Gamma form agree at 400 bits") {
     const BallField field{400};
-    for (const Rational p : {Rational(1, 2), Rational(3, 4), Rational(1), Rational(23, 20), Rational(7, 2)}) {
+    for (const Rational& p : {Rational(1, 2), Rational(3, 4), Rational(1), Rational(23, 20), Rational(7, 2)}) {
         const Ball P = field.rational(p);
         const Ball one = field.integer(1), two = field.integer(2);
         auto beta = [](const Ball& a, const Ball& b) { return gamma(a) * gamma(b) / gamma(a + b); };

@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "common.hpp"
-#include "superpack/atomic_file.hpp"
-#include "superpack/audit.hpp"
-#include "superpack/audit_certificate.hpp"
+#include "superpack/cert/atomic_file.hpp"
+#include "superpack/problems/audit.hpp"
+#include "superpack/cert/audit_certificate.hpp"
 
 namespace superpack::cli {
 

@@ -3,10 +3,10 @@
 #include <memory>
 
 #include "common.hpp"
-#include "superpack/audit_certificate.hpp"
-#include "superpack/decimal.hpp"
-#include "superpack/lattice.hpp"
-#include "superpack/lattice_certificate.hpp"
+#include "superpack/cert/audit_certificate.hpp"
+#include "superpack/arith/decimal.hpp"
+#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/cert/lattice_certificate.hpp"
 
 namespace superpack::cli {
 

@@ -1,6 +1,6 @@
 #include "common.hpp"
 
-#include "superpack/self_test.hpp"
+#include "superpack/arith/self_test.hpp"
 
 namespace superpack::cli {
 

@@ -8,7 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "superpack/json_output.hpp"
+#include "superpack/cert/output_header.hpp"
+#include "superpack/problems/family_json.hpp"
 
 namespace superpack::cli {
 

@@ -3,9 +3,9 @@
 #include <memory>
 
 #include "common.hpp"
-#include "superpack/crossover_certificate.hpp"
-#include "superpack/crossover_json.hpp"
-#include "superpack/decimal.hpp"
+#include "superpack/cert/crossover_certificate.hpp"
+#include "superpack/problems/crossover_json.hpp"
+#include "superpack/arith/decimal.hpp"
 
 namespace superpack::cli {
 

@@ -2,8 +2,8 @@
 #include <memory>
 
 #include "common.hpp"
-#include "superpack/decimal.hpp"
-#include "superpack/family_certificate.hpp"
+#include "superpack/arith/decimal.hpp"
+#include "superpack/cert/family_certificate.hpp"
 
 namespace superpack::cli {
 

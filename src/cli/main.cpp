@@ -3,7 +3,7 @@
 #include <cstdlib>
 
 #include "common.hpp"
-#include "superpack/version.hpp"
+#include "superpack/cert/version.hpp"
 
 int main(int argc, char** argv) {
     using namespace superpack::cli;

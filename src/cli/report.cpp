@@ -4,9 +4,9 @@
 #include <memory>
 
 #include "common.hpp"
-#include "superpack/atomic_file.hpp"
-#include "superpack/decimal.hpp"
-#include "superpack/lattice.hpp"
+#include "superpack/cert/atomic_file.hpp"
+#include "superpack/arith/decimal.hpp"
+#include "superpack/problems/family_lattice_check.hpp"
 
 namespace superpack::cli {
 

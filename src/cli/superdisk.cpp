@@ -3,9 +3,9 @@
 #include <memory>
 
 #include "common.hpp"
-#include "superpack/decimal.hpp"
-#include "superpack/superdisk.hpp"
-#include "superpack/superdisk_certificate.hpp"
+#include "superpack/arith/decimal.hpp"
+#include "superpack/problems/superdisk.hpp"
+#include "superpack/cert/superdisk_certificate.hpp"
 
 namespace superpack::cli {
 

@@ -1,7 +1,12 @@
-// superpack verify FILE [--json]: replays a certificate with the independent checker (checker/).
-#include <memory>
+// superpack verify FILE [--json]: runs the independent checker, superpack-verify, which is
+// built beside this executable and shares no code with it (checker/).
+#include <unistd.h>
 
-#include "checker/verifier.hpp"
+#include <cerrno>
+#include <cstring>
+#include <memory>
+#include <vector>
+
 #include "common.hpp"
 
 namespace superpack::cli {
@@ -13,32 +18,27 @@ struct VerifyOptions {
     bool json = false;
 };
 
-int run(const VerifyOptions& options) {
-    using namespace superpack_checker;
-    const VerifyReport report = verify_file(options.file);
-    if (options.json) {
-        Json document = base_header_json("verify");
-        document["file"] = options.file;
-        document["verdict"] = to_string(report.verdict);
-        document["claim_kind"] = report.claim_kind;
-        document["claim"] = report.claim_text;
-        document["steps"] = report.steps;
-        document["checker_bits"] = report.precision;
-        if (report.verdict != Verdict::valid) {
-            document["failing_step"] = report.path;
-            document["message"] = report.message;
-        }
-        std::cout << document.dump(2) << "\n";
-    } else if (report.verdict == Verdict::valid) {
-        std::cout << "valid: " << report.claim_text << "\n  (" << report.steps << " steps checked with MPFI at "
-                  << report.precision << " bits)\n";
-    }
-    const std::string where = report.path.empty() ? "" : " at " + report.path;
-    if (report.verdict == Verdict::invalid)
-        throw Failure(exit_invalid, "invalid certificate " + options.file + ": step" + where + " fails: " + report.message);
-    if (report.verdict == Verdict::malformed)
-        throw Failure(exit_usage, "unreadable certificate " + options.file + where + ": " + report.message);
-    return exit_ok;
+// The directory this executable was started from.
+std::string own_directory() {
+    std::vector<char> buffer(4096);
+    const ssize_t length = readlink("/proc/self/exe", buffer.data(), buffer.size() - 1);
+    if (length <= 0) throw Failure(exit_usage, "error: cannot find the directory of superpack (/proc/self/exe)");
+    const std::string path(buffer.data(), static_cast<std::size_t>(length));
+    return path.substr(0, path.rfind('/'));
+}
+
+[[noreturn]] void run(const VerifyOptions& options) {
+    const std::string checker = own_directory() + "/superpack-verify";
+    std::vector<std::string> arguments{checker};
+    if (options.json) arguments.push_back("--json");
+    arguments.push_back("--");
+    arguments.push_back(options.file);
+    std::vector<char*> argv;
+    for (std::string& argument : arguments) argv.push_back(argument.data());
+    argv.push_back(nullptr);
+    std::cout.flush();
+    execv(checker.c_str(), argv.data());
+    throw Failure(exit_usage, "error: cannot run " + checker + ": " + std::strerror(errno));
 }
 
 }  // namespace
@@ -46,7 +46,7 @@ int run(const VerifyOptions& options) {
 void add_verify(CLI::App& app) {
     auto options = std::make_shared<VerifyOptions>();
     CLI::App* command = app.add_subcommand(
-        "verify", "Replay a certificate with the independent checker (exit 0 valid, 1 invalid, 2 unreadable)");
+        "verify", "Replay a certificate with the independent checker superpack-verify (exit 0 valid, 1 invalid, 2 unreadable)");
     command->add_option("file", options->file, "the certificate (JSON)")->required();
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });

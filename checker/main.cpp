@@ -1,0 +1,90 @@
+// superpack-verify FILE [--json]: replays a superpack certificate with the independent checker
+// and says what it proved. Exit 0 valid, 1 invalid (naming the first failing step), 2 unreadable.
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include "checker/verifier.hpp"
+
+namespace {
+
+using namespace superpack_checker;
+// Keys in the order written, as every superpack document has them.
+using Document = nlohmann::ordered_json;
+
+constexpr int exit_valid = 0, exit_invalid = 1, exit_unreadable = 2;
+
+const char* const usage =
+    "usage: superpack-verify [--json] [--] FILE\n"
+    "Replays a superpack certificate with the independent checker (MPFI, its own formulas).\n"
+    "  --json     print one JSON document on stdout\n"
+    "Exit: 0 valid, 1 invalid (the first failing step is named), 2 unreadable or bad usage.\n";
+
+int fail(bool json, int code, const std::string& message) {
+    if (json) std::cout << Document{{"tool", "superpack-verify"}, {"error", message}, {"exit", code}}.dump(2) << "\n";
+    std::cerr << "superpack-verify: " << message << "\n";
+    return code;
+}
+
+int run(const std::string& file, bool json) {
+    const VerifyReport report = verify_file(file);
+    const std::string where = report.path.empty() ? "" : " at " + report.path;
+    if (json) {
+        Document document{{"tool", "superpack-verify"}, {"version", SUPERPACK_VERSION}, {"commit", SUPERPACK_COMMIT},
+                      {"command", "verify"}, {"file", file}, {"verdict", to_string(report.verdict)},
+                      {"claim_kind", report.claim_kind}, {"claim", report.claim_text}, {"steps", report.steps},
+                      {"checker_bits", report.precision}};
+        if (report.verdict != Verdict::valid) {
+            document["failing_step"] = report.path;
+            document["message"] = report.message;
+        }
+        std::cout << document.dump(2) << "\n";
+    } else if (report.verdict == Verdict::valid) {
+        std::cout << "valid: " << report.claim_text << "\n  (" << report.steps << " steps checked with MPFI at "
+                  << report.precision << " bits)\n";
+    }
+    if (report.verdict == Verdict::invalid) {
+        std::cerr << "superpack-verify: invalid certificate " << file << ": step" << where << " fails: " << report.message << "\n";
+        return exit_invalid;
+    }
+    if (report.verdict == Verdict::malformed) {
+        std::cerr << "superpack-verify: unreadable certificate " << file << where << ": " << report.message << "\n";
+        return exit_unreadable;
+    }
+    return exit_valid;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string file;
+    bool json = false, file_given = false, options_ended = false;
+    for (int k = 1; k < argc; ++k) {
+        const std::string argument = argv[k];
+        const bool option = !options_ended && !argument.empty() && argument[0] == '-';
+        if (option && argument == "--") {
+            options_ended = true;
+        } else if (option && (argument == "--help" || argument == "-h")) {
+            std::cout << usage;
+            return exit_valid;
+        } else if (option && argument == "--version") {
+            std::cout << "superpack-verify " << SUPERPACK_VERSION << " (" << SUPERPACK_COMMIT << ")\n";
+            return exit_valid;
+        } else if (option && argument == "--json") {
+            json = true;
+        } else if (option) {
+            return fail(json, exit_unreadable, "unknown option '" + argument.substr(0, 100) + "' (see --help)");
+        } else if (file_given) {
+            return fail(json, exit_unreadable, "one certificate at a time (see --help)");
+        } else {
+            file = argument;
+            file_given = true;
+        }
+    }
+    if (!file_given) return fail(json, exit_unreadable, "no certificate given (see --help)");
+    try {
+        return run(file, json);
+    } catch (const std::exception& error) {
+        return fail(json, exit_unreadable, std::string("cannot check ") + file + ": " + error.what());
+    }
+}

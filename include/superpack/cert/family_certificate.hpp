@@ -1,0 +1,21 @@
+// The certificate of claim kind "family-lattice": the density of one family (C0, C1, O0, O1)
+// at one exact p, with the proof that the contact equations were solved as the paper asks
+// (Newton box and root-free [0, s) for C0/C1; the Krawczyk partition of the (q, s) box for O1).
+#pragma once
+#include "superpack/cert/certificate.hpp"
+
+namespace superpack {
+
+// The proof that fixes the family's parameters at p (a point, or an interval of p for which
+// the lattice was certified by enclose_family_at): the proof tree of a family-lattice
+// certificate, which other claim kinds embed (family-lattice-check, audit).
+// Throws std::runtime_error unless lattice.status is certified.
+template <class I>
+Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p);
+
+// Throws std::runtime_error unless lattice.status is certified (only proofs are certified).
+template <class Field>
+Json family_certificate(const FamilyLattice<typename Field::Interval>& lattice, const Rational& p,
+                        const Field& field, long digits);
+
+}  // namespace superpack

@@ -1,0 +1,174 @@
+// The four lattice families of Jiao, Stillinger & Torquato (2009): their contact equations,
+// certified parameters, bases and densities phi = V_sb(p) / |det basis|.
+//
+// Every equation is a template over the scalar of its unknowns (S) and of p (P), each an
+// interval or a Jet, so Newton/Krawczyk (d/d unknowns) and the crossover and slope
+// drivers (d/dp) use one source per formula.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "superpack/geometry/lattice_basis.hpp"
+#include "superpack/solve/newton.hpp"
+#include "superpack/solve/root_partition.hpp"
+#include "superpack/geometry/superball.hpp"
+
+namespace superpack {
+
+enum class Family { C0, C1, O0, O1 };
+
+const char* to_string(Family family);
+Family parse_family(const std::string& name);  // throws InputError
+std::vector<Family> all_families();
+// Claimed domain in words and as a predicate on exact p (throws InputError outside it).
+std::string family_domain_text(Family family);
+void require_in_domain(Family family, const Rational& p);
+
+// x^y with y (and possibly x) varying: the mixed-scalar cases needed by d/dp.
+template <class I> Jet<I> pow_nonneg(const I& x, const Jet<I>& y) { return exp(y * log(x)); }
+
+// 2^(-1/(2p)) = exp(-log 2 / (2p)), the shift t of the C0 and C1 equations.
+template <class P, class L>
+P cubic_shift(const P& two_p, const L& log_two) {
+    return exp(-log_two / two_p);
+}
+
+template <class P>
+P cubic_shift(const P& p) {
+    const auto field = scalar_field(p);
+    return cubic_shift(field.integer(2) * p, log(field.integer(2)));
+}
+
+// The quantities of the C0/C1 equations that depend on p only, computed once per p so that
+// Newton's many evaluations in s do not repeat them.
+template <class P>
+struct CubicConstants {
+    P two_p;   // 2p
+    P shift;   // t = 2^(-1/(2p))
+    P corner;  // 2^(-2p)
+};
+
+template <class P>
+CubicConstants<P> cubic_constants(const P& p) {
+    const auto field = scalar_field(p);
+    const P two_p = field.integer(2) * p;
+    const auto log_two = log(field.integer(2));
+    return {two_p, cubic_shift(two_p, log_two), exp(-two_p * log_two)};
+}
+
+// C0 (Eq. 2): (s + t)^(2p) + s^(2p) + 2^(-2p) - 1 = 0, s the smallest positive root.
+// C1 (Eq. 9): (s + t)^(2p) + 2 s^(2p) - 1 = 0.
+template <class S, class P>
+auto cubic_equation(Family family, const S& s, const CubicConstants<P>& c) {
+    const auto field = scalar_field(c.two_p);
+    // |s| rather than s: identical for s >= 0, and a box [0, b] made by a ball backend may
+    // reach a rounding error below 0 (then the root-free claim covers a slightly larger set).
+    const auto shifted = pow_abs(s + c.shift, c.two_p);
+    const auto own = pow_abs(s, c.two_p);
+    if (family == Family::C0) return shifted + own + c.corner - field.integer(1);
+    return shifted + field.integer(2) * own - field.integer(1);
+}
+
+template <class S, class P>
+auto cubic_equation(Family family, const S& s, const P& p) {
+    return cubic_equation(family, s, cubic_constants(p));
+}
+
+// Bases (rows e1, e2, e3) of Eqs. 1, 8, 5, 11.
+// With the shift t = 2^(-1/(2p)) already known (cubic_constants), or computed from p.
+template <class T>
+Basis<T> cubic_basis_with_shift(Family family, const T& s, const T& t) {
+    const T side = constant_like(t, 2) * t;  // 2^(1 - 1/(2p))
+    const T zero = constant_like(t, 0), one = constant_like(t, 1), two = constant_like(t, 2);
+    if (family == Family::C0)
+        return Basis<T>{{{side, side, zero}, {zero, zero, two}, {-(two * s), two * (s + t), one}}};
+    return Basis<T>{{{side, side, zero}, {side, zero, side}, {two * (s + t), -(two * s), -(two * s)}}};
+}
+
+template <class T>
+Basis<T> cubic_basis(Family family, const T& s, const T& p) {
+    return cubic_basis_with_shift(family, s, cubic_shift(p));
+}
+
+// O0 (Eq. 5): the height c = (1 - 2^(1-2p))^(1/(2p)) of e3 = i + j + 2c k.
+template <class P>
+P octahedral_height(const P& p) {
+    const auto field = scalar_field(p);
+    const auto one = field.integer(1);
+    const P base = one - exp((one - field.integer(2) * p) * log(field.integer(2)));
+    return pow_nonneg(base, one / (field.integer(2) * p));
+}
+
+template <class T>
+Basis<T> o0_basis(const T& p) {
+    const T zero = constant_like(p, 0), one = constant_like(p, 1), two = constant_like(p, 2);
+    return Basis<T>{{{two, zero, zero}, {zero, two, zero}, {one, one, two * octahedral_height(p)}}};
+}
+
+// O1 (Eq. 12) in the unknowns x = (q, s), with l = 3^(-1/(2p)):
+//   2|q|^(2p) + |s|^(2p) - 1 = 0,   |l+q|^(2p) + |s-l|^(2p) + |l-q|^(2p) - 1 = 0.
+template <class P>
+P o1_l(const P& p) {
+    const auto field = scalar_field(p);
+    return exp(-log(field.integer(3)) / (field.integer(2) * p));
+}
+
+template <class S, class P>
+std::vector<S> o1_equations(const std::vector<S>& x, const P& p) {
+    const auto field = scalar_field(p);
+    const auto two_p = field.integer(2) * p;
+    const auto one = field.integer(1);
+    const auto l = o1_l(p);
+    const S& q = x[0];
+    const S& s = x[1];
+    return {field.integer(2) * pow_abs(q, two_p) + pow_abs(s, two_p) - one,
+            pow_abs(q + l, two_p) + pow_abs(s - l, two_p) + pow_abs(l - q, two_p) - one};
+}
+
+template <class T>
+Basis<T> o1_basis(const T& q, const T& s, const T& p) {
+    const auto field = scalar_field(p);
+    const T two_l = field.integer(2) * o1_l(p);
+    const T two = constant_like(p, 2);
+    return Basis<T>{{{two_l, two_l, -two_l}, {-(two * q), two * s, -(two * q)}, {two * q, -(two * q), -(two * s)}}};
+}
+
+// The certified description of one family at one p.
+enum class FamilyStatus { certified, no_lattice, undecided };
+
+template <class I>
+struct NamedValue {
+    std::string name;
+    I value;
+};
+
+template <class I>
+struct RootBranch {
+    std::vector<NamedValue<I>> unknowns;  // e.g. (q, s)
+    RootLeaf<I> proof;
+};
+
+template <class I>
+struct FamilyLattice {
+    explicit FamilyLattice(Family which) : family(which) {}
+    Family family;
+    FamilyStatus status = FamilyStatus::undecided;
+    std::string message;                    // why, when not certified
+    std::vector<NamedValue<I>> parameters;  // s; or l, q, s; or c
+    std::vector<RootBranch<I>> branches;    // every certified root of the contact equations
+    std::vector<RootLeaf<I>> search;        // the partition behind "every root" (O1), or the
+                                            // root-free [0, s) and the Newton box (C0, C1)
+    std::optional<Basis<I>> basis;
+    std::optional<I> volume, determinant, phi;
+};
+
+// Certifies the family at p (an interval: a point for one p, a piece for the audit).
+// Throws InputError when p is outside the family's claimed domain.
+FamilyLattice<DInterval> enclose_family(Family family, const Rational& p, const DoubleField& field);
+FamilyLattice<Ball> enclose_family(Family family, const Rational& p, const BallField& field);
+
+template <class I>
+FamilyLattice<I> enclose_family_at(Family family, const I& p);
+
+}  // namespace superpack

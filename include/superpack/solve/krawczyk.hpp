@@ -1,0 +1,116 @@
+// Certified root isolation in n dimensions: the Krawczyk operator.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "superpack/arith/jet.hpp"
+#include "superpack/solve/approximate_inverse.hpp"
+#include "superpack/solve/root_status.hpp"
+
+namespace superpack {
+
+template <class I>
+struct KrawczykResult {
+    RootStatus status = RootStatus::undecided;
+    std::vector<I> box;          // the root (if any) lies in box
+    std::vector<I> initial_box;  // the box the proof is about
+    bool existence = false;
+    bool uniqueness = false;
+    int iterations = 0;
+    std::string reason;
+};
+
+// Krawczyk operator K(X) = m - C f(m) + (Id - C J(X)) (X - m), with C a floating-point
+// inverse of the midpoint Jacobian (any C is sound; a good one makes K contract).
+// K(X) ⊂ int X proves a unique zero in X; K(X) ∩ X = ∅ proves none. `f` maps a
+// std::vector of I or of Jet<I> to a vector of the same length.
+//
+// The interval part is written with plain loops over std::vector rather than a matrix
+// library's matrices of intervals: those need Scalar(0) conversions and a default-constructed
+// scalar, and a Ball has no meaningful precision until it is made from a field.
+template <class I, class F>
+KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double target_width,
+                                   int max_iterations) {
+    const std::size_t n = box.size();
+    const auto field = field_of(box[0]);
+    KrawczykResult<I> result{RootStatus::undecided, box, box, false, false, 0, ""};
+    std::vector<I> current = box;
+    for (int iteration = 1; iteration <= max_iterations; ++iteration) {
+        result.iterations = iteration;
+        const std::vector<I> values = f(current);
+        for (std::size_t i = 0; i < n; ++i)
+            if (!contains_zero(values[i])) {
+                result.status = result.existence ? result.status : RootStatus::none;
+                if (!result.existence) result.reason = "a component of f has one sign on the box";
+                return result;
+            }
+        // Jacobian over the box, one column per seeded variable.
+        std::vector<std::vector<I>> jacobian(n, std::vector<I>(n, field.integer(0)));
+        for (std::size_t j = 0; j < n; ++j) {
+            std::vector<Jet<I>> seeded;
+            for (std::size_t k = 0; k < n; ++k) seeded.push_back(k == j ? variable(current[k]) : constant(current[k]));
+            const std::vector<Jet<I>> column = f(seeded);
+            for (std::size_t i = 0; i < n; ++i) jacobian[i][j] = column[i].derivative;
+        }
+        DoubleMatrix middle(n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) middle(i, j) = mid_double(jacobian[i][j]);
+        const std::optional<DoubleMatrix> inverse = approximate_inverse(middle);
+        if (!inverse) {
+            result.reason = "midpoint Jacobian singular";
+            return result;
+        }
+        std::vector<I> center, offset;
+        for (std::size_t k = 0; k < n; ++k) {
+            center.push_back(midpoint(current[k]));
+            offset.push_back(current[k] - center[k]);
+        }
+        const std::vector<I> at_center = f(center);
+        std::vector<I> image;
+        bool interior = true, disjoint = false;
+        for (std::size_t i = 0; i < n; ++i) {
+            I k = center[i];
+            for (std::size_t j = 0; j < n; ++j) {
+                const I c = from_doubles(field.integer(0), (*inverse)(i, j), (*inverse)(i, j));
+                k = k - c * at_center[j];
+                // Row i of (Id - C J(X)).
+                I entry = field.integer(i == j ? 1 : 0);
+                for (std::size_t l = 0; l < n; ++l)
+                    entry = entry - from_doubles(field.integer(0), (*inverse)(i, l), (*inverse)(i, l)) * jacobian[l][j];
+                k = k + entry * offset[j];
+            }
+            image.push_back(k);
+            interior = interior && interior_contains(current[i], k);
+            I meet = k;
+            if (!intersect(meet, k, current[i])) disjoint = true;
+        }
+        if (disjoint) {
+            if (!result.existence) {
+                result.status = RootStatus::none;
+                result.reason = "K(X) disjoint from X";
+            }
+            return result;
+        }
+        if (interior && !result.existence) {
+            result.existence = result.uniqueness = true;
+            result.status = RootStatus::unique;
+            result.reason = "K(X) in interior of X";
+        }
+        double before = 0, after = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            before = std::max(before, width_upper(current[i]));
+            I meet = image[i];
+            intersect(meet, image[i], current[i]);
+            current[i] = meet;
+            after = std::max(after, width_upper(current[i]));
+        }
+        result.box = current;
+        if (result.existence && (after <= target_width || after >= 0.5 * before)) break;
+    }
+    if (!result.existence) result.reason = "Krawczyk operator did not contract into the box";
+    return result;
+}
+
+
+}  // namespace superpack

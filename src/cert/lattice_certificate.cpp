@@ -1,0 +1,112 @@
+#include "superpack/cert/lattice_certificate.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "superpack/arith/exact.hpp"
+
+namespace superpack {
+
+namespace {
+
+Json rational_basis_json(const Basis<Rational>& basis) {
+    Json rows = Json::array();
+    for (int i = 0; i < 3; ++i) {
+        Json row = Json::array();
+        for (int j = 0; j < 3; ++j) row.push_back(rational_text(basis[i][j]));
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+std::array<Rational, 3> exact_vector(const Basis<Rational>& basis, const Coefficients& c) {
+    std::array<Rational, 3> v;
+    for (int j = 0; j < 3; ++j) v[j] = c[0] * basis[0][j] + c[1] * basis[1][j] + c[2] * basis[2][j];
+    return v;
+}
+
+// How an exact contact is decided (NOTES.md 5.3), in words for the reader of the file.
+std::string contact_reason(const Rational& p) {
+    Rational two_p = 2 * p;
+    two_p.canonicalize();
+    if (two_p.get_den() == 1)
+        return "2p = " + two_p.get_num().get_str() + " is an integer: sum |v_i|^(2p) = 2^(2p) in rational arithmetic";
+    return "the k nonzero coordinates share one absolute value a, and (a/2)^m k^n = 1 with 2p = m/n, exactly";
+}
+
+}  // namespace
+
+template <class Field>
+Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, const Basis<Rational>& basis,
+                         const Rational& p, const Field& field, long digits) {
+    using I = typename Field::Interval;
+    if (check.verdict == Verdict::undecided) throw std::runtime_error("certificate: the lattice check is undecided");
+    const Json basis_json = rational_basis_json(basis);
+    const bool packing = check.verdict == Verdict::admissible;
+
+    // The data the coefficient bound comes from: |det| and ||e_j x e_k||_1 (NOTES.md 5.2).
+    const Basis<I> enclosed = enclose_basis(basis, field);
+    Json cross_norms = Json::array();
+    for (int i = 0; i < 3; ++i) {
+        const auto& u = enclosed[(i + 1) % 3];
+        const auto& w = enclosed[(i + 2) % 3];
+        const I norm = abs(u[1] * w[2] - u[2] * w[1]) + abs(u[2] * w[0] - u[0] * w[2]) + abs(u[0] * w[1] - u[1] * w[0]);
+        cross_norms.push_back(exact_interval_json(norm));
+    }
+    Json candidates = Json::array();
+    for (const auto& candidate : check.evaluated) {
+        const bool contact = std::find(check.contact_vectors.begin(), check.contact_vectors.end(), candidate.coefficients) !=
+                             check.contact_vectors.end();
+        const I two = field.integer(2);
+        // "undecided": a near contact, possible only beside a witness (an overlapping verdict).
+        const char* status = contact                               ? "contact"
+                             : certainly_less(candidate.norm, two) ? "below"
+                             : certainly_less(two, candidate.norm) ? "above"
+                                                                   : "undecided";
+        candidates.push_back(Json{{"coefficients", coefficients_json(candidate.coefficients)},
+                                  {"norm", exact_interval_json(candidate.norm)},
+                                  {"status", status}});
+    }
+    Json contacts = Json::array();
+    for (const auto& c : check.contact_vectors) {
+        if (c[0] < 0 || (c[0] == 0 && (c[1] < 0 || (c[1] == 0 && c[2] < 0)))) continue;  // one per +-pair
+        Json vector = Json::array();
+        for (const Rational& x : exact_vector(basis, c)) vector.push_back(rational_text(x));
+        contacts.push_back(Json{{"coefficients", coefficients_json(c)}, {"vector", vector}, {"decided", contact_reason(p)}});
+    }
+    Json contact_vectors = Json::array();
+    for (const auto& c : check.contact_vectors) contact_vectors.push_back(coefficients_json(c));
+
+    std::string text = "The lattice with basis rows " + basis_json.dump() + " at p = " + rational_text(p);
+    Json data{{"basis", basis_json}, {"p", rational_text(p)}, {"packing", packing}};
+    if (packing) {
+        text += " is a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1 with " +
+                std::to_string(check.contacts()) + " contacts (every nonzero lattice vector has 2p-norm >= 2, " +
+                "with equality exactly for the contact vectors)";
+        data["contacts"] = check.contacts();
+        data["contact_vectors"] = contact_vectors;
+    } else {
+        const Coefficients& w = check.witness->coefficients;
+        text += " is not a packing: the lattice vector with coefficients (" + std::to_string(w[0]) + ", " +
+                std::to_string(w[1]) + ", " + std::to_string(w[2]) + ") has 2p-norm < 2";
+        data["witness"] = Json{{"coefficients", coefficients_json(w)}, {"norm", exact_interval_json(check.witness->norm)}};
+    }
+    Json claim{{"kind", "lattice-check"}, {"text", text}, {"data", data}};
+    Json inputs{{"basis", basis_json}, {"p", rational_text(p)}, {"p_decimal", decimal_or_fraction_text(p)}};
+    Json proof{{"kind", "enumeration"},
+               {"text", "by Cramer and Hoelder every v = a e1 + b e2 + c e3 with ||v||_(2p) <= 2 has |a_i| <= "
+                        "floor(2 ||e_j x e_k||_1 / |det|); every triple in that box (one per +-pair) is listed unless a "
+                        "coordinate exceeds 2 in size, with its norm enclosure: above 2, below 2, or a contact decided exactly"},
+               {"coefficient_bound", coefficients_json(check.coefficient_bound)},
+               {"bound_data", Json{{"determinant", exact_interval_json(abs(determinant(enclosed)))},
+                                   {"cross_norms", cross_norms}}},
+               {"excluded_by_max_norm", check.excluded_by_max_norm},
+               {"candidates", candidates},
+               {"contacts", contacts}};
+    return certificate_document(certificate_head("check-lattice", field, digits), claim, inputs, proof);
+}
+
+template Json lattice_certificate(const LatticeCheck<DInterval>&, const Basis<Rational>&, const Rational&, const DoubleField&, long);
+template Json lattice_certificate(const LatticeCheck<Ball>&, const Basis<Rational>&, const Rational&, const BallField&, long);
+
+}  // namespace superpack

@@ -1,0 +1,265 @@
+#include "superpack/problems/audit.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <sstream>
+
+namespace superpack {
+
+namespace {
+
+// p*_o = ln 3 / ln 4 lies in (792481/10^6, 792482/10^6); checked in interval arithmetic on use.
+const Rational crossover_below(792481, 1000000);
+const Rational crossover_above(792482, 1000000);
+
+void require_crossover_bracket() {
+    const DoubleField field;
+    const DInterval crossover = log(field.integer(3)) / log(field.integer(4));
+    if (!certainly_less(field.rational(crossover_below), crossover) ||
+        !certainly_less(crossover, field.rational(crossover_above)))
+        throw std::logic_error("the rational bracket of p*_o = ln3/ln4 is wrong");
+}
+
+DInterval piece_interval(const Rational& lo, const Rational& hi) {
+    const DoubleField field;
+    return hull(field.rational(lo), field.rational(hi));
+}
+
+Json parameters_json(const FamilyLattice<DInterval>& lattice) {
+    Json result = Json::object();
+    for (const auto& parameter : lattice.parameters) result[parameter.name] = enclosure_json(parameter.value);
+    return result;
+}
+
+Json basis_json(const Basis<DInterval>& basis) {
+    Json rows = Json::array();
+    for (const auto& row : basis) {
+        Json entries = Json::array();
+        for (const auto& x : row) entries.push_back(enclosure_json(x));
+        rows.push_back(entries);
+    }
+    return rows;
+}
+
+// O1 by continuation: the root of Eq. (12) is followed from p = 1/2 (Minkowski (1/6, 2/3), or
+// the second root (5/12, 1/6)) piece by piece; on each piece Krawczyk proves that a box around
+// the previous root holds exactly one root for every p of the piece. This avoids the full (q, s)
+// search of enclose_family_at, whose cost explodes on some pieces (NOTES.md 5.5).
+struct O1Tracker {
+    double q, s;
+};
+
+FamilyLattice<DInterval> track_o1(O1Tracker& tracker, const DInterval& p) {
+    FamilyLattice<DInterval> lattice{Family::O1};
+    const DoubleField field;
+    auto equations = [&](const auto& x) { return o1_equations(x, p); };
+    const double radius = 2 * width_upper(p) + 1e-9;
+    for (double r = radius; r < 0.05; r *= 4) {
+        const std::vector<DInterval> box{from_doubles(field.integer(0), std::max(0.0, tracker.q - r), tracker.q + r),
+                                         from_doubles(field.integer(0), tracker.s - r, tracker.s + r)};
+        const KrawczykResult<DInterval> proof = krawczyk_isolate(equations, box, 0.0, 60);
+        if (proof.status != RootStatus::unique || !contains(proof.initial_box[0], proof.box[0]) ||
+            !contains(proof.initial_box[1], proof.box[1]))
+            continue;
+        tracker = {mid_double(proof.box[0]), mid_double(proof.box[1])};
+        lattice.parameters = {{"l", o1_l(p)}, {"q", proof.box[0]}, {"s", proof.box[1]}};
+        lattice.search.push_back({proof.initial_box, RootStatus::unique, proof.box, proof.reason});
+        lattice.branches.push_back({{{"q", proof.box[0]}, {"s", proof.box[1]}}, lattice.search.back()});
+        lattice.basis = o1_basis(proof.box[0], proof.box[1], p);
+        lattice.status = FamilyStatus::certified;
+        lattice.message = "root of Eq. (12) followed by continuation from p = 1/2; Krawczyk: unique in the box";
+        return lattice;
+    }
+    lattice.message = "Krawczyk could not follow the root of Eq. (12) onto this piece";
+    return lattice;
+}
+
+// One piece, without subdivision.
+AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
+                       O1Tracker* tracker = nullptr) {
+    AuditPiece piece;
+    piece.lo = lo;
+    piece.hi = hi;
+    const DInterval p = piece_interval(lo, hi);
+    const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_o1(*tracker, p) : enclose_family_at(family, p);
+    piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
+    piece.detail["family_status"] = lattice.status == FamilyStatus::certified ? "certified"
+                                    : lattice.status == FamilyStatus::no_lattice ? "no_lattice"
+                                                                                 : "undecided";
+    if (!lattice.message.empty()) piece.detail["family_message"] = lattice.message;
+    const std::optional<Basis<DInterval>> basis = lattice.basis;
+    const Json parameters = parameters_json(lattice);
+    piece.detail["parameters"] = parameters;
+    if (!basis) {
+        piece.outcome = lattice.status == FamilyStatus::no_lattice ? "no_lattice" : "undecided";
+        piece.reason = "family not certified: " + lattice.message;
+        return piece;
+    }
+    piece.lattice = std::make_shared<const FamilyLattice<DInterval>>(lattice);
+    piece.detail["basis"] = basis_json(*basis);
+    const std::vector<Coefficients> identities = family_contact_triples(family);
+    Json identity_json = Json::array();
+    for (const auto& c : identities) identity_json.push_back(coefficients_json(c));
+    piece.detail["contact_identities"] = identity_json;
+    const LatticeCheck<DInterval> check = check_lattice(*basis, p, [&](const Coefficients& c) {
+        return std::find(identities.begin(), identities.end(), c) != identities.end();
+    });
+    piece.detail["check"] = lattice_check_json(check, true);
+    piece.check = std::make_shared<const LatticeCheck<DInterval>>(check);
+    piece.verdict = check.verdict;
+    piece.contacts = check.contacts();
+    piece.reason = check.reason;
+    if (check.witness) piece.witness = check.witness->coefficients;
+    switch (check.verdict) {
+        case Verdict::admissible: piece.outcome = "packing"; break;
+        case Verdict::overlapping: piece.outcome = "overlapping"; break;
+        case Verdict::undecided: piece.outcome = "undecided"; break;
+    }
+    return piece;
+}
+
+}  // namespace
+
+AuditRange claimed_audit_range(Family family) {
+    require_crossover_bracket();
+    const std::string bracket = "p*_o = ln3/ln4 is irrational: the piece [792481/10^6, 792482/10^6] brackets it "
+                                "(checked in interval arithmetic) and is audited as one piece";
+    switch (family) {
+        case Family::C0:
+        case Family::C1: return {Rational(1), Rational(10), {}, "the claim is p >= 1; audited on [1, 10]"};
+        case Family::O0: return {crossover_below, Rational(1), {crossover_above}, "claimed [p*_o, 1]; " + bracket};
+        case Family::O1: return {Rational(1, 2), crossover_above, {crossover_below}, "claimed [1/2, p*_o]; " + bracket};
+    }
+    return {};
+}
+
+AuditSettings default_audit_settings(Family family) {
+    // O1's root search (two unknowns) costs grow fast with the width of p: keep pieces ~7e-4 and do not
+    // bisect (an undecided piece still gets the certified midpoint check).
+    if (family == Family::O1) return {300, 3};
+    return {16, 12};
+}
+
+AuditResult audit_family(Family family, const AuditRange& range, const AuditSettings& settings, AuditBranch branch,
+                         const AuditProgress& progress) {
+    if (branch == AuditBranch::o1_second_root && family != Family::O1)
+        throw InputError("the second root branch exists for O1 only");
+    if (!(range.lo < range.hi)) throw InputError("empty p range");
+    AuditResult result{family, branch, range, {}};
+    std::vector<Rational> ends{range.lo};
+    for (const Rational& b : range.breaks)
+        if (b > range.lo && b < range.hi) ends.push_back(b);
+    ends.push_back(range.hi);
+    std::sort(ends.begin(), ends.end());
+    const Rational total = range.hi - range.lo;
+    std::optional<O1Tracker> tracker;
+    if (family == Family::O1) {
+        if (branch == AuditBranch::published) tracker = O1Tracker{1.0 / 6, 2.0 / 3};
+        else tracker = O1Tracker{5.0 / 12, 1.0 / 6};
+        if (range.lo != Rational(1, 2)) {
+            // Start the continuation from the complete root search at the exact left end.
+            const FamilyLattice<DInterval> start = enclose_family_at(family, piece_interval(range.lo, range.lo));
+            const std::size_t index = branch == AuditBranch::published ? 0 : start.branches.size() - 1;
+            if (start.branches.empty()) throw std::runtime_error("no root of Eq. (12) at the start of the range");
+            tracker = O1Tracker{mid_double(start.branches[index].unknowns[0].value),
+                                mid_double(start.branches[index].unknowns[1].value)};
+        }
+    }
+    std::function<void(const Rational&, const Rational&, int)> audit = [&](const Rational& lo, const Rational& hi,
+                                                                           int depth) {
+        AuditPiece piece = audit_piece(family, lo, hi, tracker ? &*tracker : nullptr);
+        piece.detail["lattice"] = branch == AuditBranch::published ? "published" : "second root of Eq. (12)";
+        const bool settled = piece.outcome == "packing" || piece.outcome == "overlapping" || piece.outcome == "no_lattice";
+        if (!settled && depth < settings.max_depth) {
+            Rational middle = (lo + hi) / 2;
+            middle.canonicalize();
+            audit(lo, middle, depth + 1);
+            audit(middle, hi, depth + 1);
+            return;
+        }
+        if (!settled) {
+            piece.reason += " (subdivision floor reached)";
+            // A refutation at one exact p of the piece is still certified: try the midpoint.
+            Rational middle = (lo + hi) / 2;
+            middle.canonicalize();
+            O1Tracker copy = tracker ? *tracker : O1Tracker{};
+            const AuditPiece point = audit_piece(family, middle, middle, tracker ? &copy : nullptr);
+            piece.detail["midpoint_check"] = point.detail;
+            if (point.outcome == "overlapping") {
+                piece.outcome = "overlapping_at_point";
+                piece.witness = point.witness;
+                piece.reason += "; at p = " + rational_text(middle) + " the lattice overlaps (witness in midpoint_check)";
+            }
+        }
+        if (progress)
+            progress(std::string(to_string(family)) + " p in [" + decimal_or_fraction_text(lo) + ", " +
+                     decimal_or_fraction_text(hi) + "]: " + piece.outcome);
+        result.pieces.push_back(std::move(piece));
+    };
+    for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
+        const Rational share = (ends[k + 1] - ends[k]) / total * settings.initial_pieces;
+        const long count = std::max(1L, static_cast<long>(share.get_d()));
+        for (long i = 0; i < count; ++i) {
+            Rational lo = ends[k] + (ends[k + 1] - ends[k]) * i / count, hi = ends[k] + (ends[k + 1] - ends[k]) * (i + 1) / count;
+            lo.canonicalize();
+            hi.canonicalize();
+            audit(lo, hi, 0);
+        }
+    }
+    return result;
+}
+
+std::vector<AuditPiece> merge_verdict_ranges(const std::vector<AuditPiece>& pieces) {
+    std::vector<AuditPiece> merged;
+    for (const AuditPiece& piece : pieces) {
+        if (!merged.empty()) {
+            AuditPiece& last = merged.back();
+            if (last.outcome == piece.outcome && last.contacts == piece.contacts && last.witness == piece.witness &&
+                last.hi == piece.lo && (piece.outcome != "undecided" || last.reason == piece.reason)) {
+                last.hi = piece.hi;
+                continue;
+            }
+        }
+        AuditPiece summary{piece.lo, piece.hi, piece.verdict, piece.reason, piece.outcome, piece.contacts, piece.witness, Json(), nullptr, nullptr};
+        merged.push_back(summary);
+    }
+    return merged;
+}
+
+std::string audit_file_name(const AuditResult& result) {
+    return std::string("proofs/audit-") + to_string(result.family) +
+           (result.branch == AuditBranch::o1_second_root ? "-second-root" : "") + ".json";
+}
+
+Json audit_json(const AuditResult& result) {
+    Json document;
+    document["family"] = to_string(result.family);
+    document["lattice"] = result.branch == AuditBranch::published ? "published (the paper's equations)"
+                                                                  : "second real root of Eq. (12)";
+    document["range"] = Json{{"lo", rational_text(result.range.lo)}, {"hi", rational_text(result.range.hi)}};
+    document["range_note"] = result.range.note;
+    document["claimed_contacts"] = claimed_contacts(result.family);
+    document["criterion"] = "p >= 1/2: translates by u, v have disjoint interiors iff ||u - v||_(2p) >= 2; every "
+                            "vector with ||v||_(2p) <= 2 has |a_i| <= 2 ||e_j x e_k||_1 / |det| (NOTES.md section 5)";
+    Json verdicts = Json::array();
+    for (const AuditPiece& range : merge_verdict_ranges(result.pieces)) {
+        Json entry{{"p", Json{{"lo", rational_text(range.lo)}, {"hi", rational_text(range.hi)}}}, {"outcome", range.outcome},
+                   {"contacts", range.contacts}};
+        if (range.witness) entry["witness"] = coefficients_json(*range.witness);
+        if (range.outcome == "undecided") entry["reason"] = range.reason;
+        verdicts.push_back(entry);
+    }
+    document["verdict_ranges"] = verdicts;
+    Json pieces = Json::array();
+    for (const AuditPiece& piece : result.pieces) {
+        Json entry{{"p", Json{{"lo", rational_text(piece.lo)}, {"hi", rational_text(piece.hi)}}},
+                   {"outcome", piece.outcome}, {"reason", piece.reason}, {"contacts", piece.contacts}};
+        entry["witness"] = piece.witness ? coefficients_json(*piece.witness) : Json(nullptr);
+        entry["detail"] = piece.detail;
+        pieces.push_back(entry);
+    }
+    document["pieces"] = pieces;
+    return document;
+}
+
+}  // namespace superpack

@@ -1,0 +1,191 @@
+#include "superpack/problems/families.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "superpack/solve/guess.hpp"
+
+namespace superpack {
+
+const char* to_string(Family family) {
+    switch (family) {
+        case Family::C0: return "C0";
+        case Family::C1: return "C1";
+        case Family::O0: return "O0";
+        case Family::O1: return "O1";
+    }
+    return "?";
+}
+
+std::vector<Family> all_families() { return {Family::C0, Family::C1, Family::O0, Family::O1}; }
+
+Family parse_family(const std::string& name) {
+    for (Family family : all_families())
+        if (name == to_string(family)) return family;
+    throw InputError("unknown family '" + name + "' (expected C0, C1, O0 or O1)");
+}
+
+std::string family_domain_text(Family family) {
+    switch (family) {
+        case Family::C0:
+        case Family::C1: return "p >= 1";
+        case Family::O0: return "1/2 < p <= 1";
+        case Family::O1: return "p >= 1/2";
+    }
+    return "";
+}
+
+void require_in_domain(Family family, const Rational& p) {
+    const Rational half(1, 2);
+    bool inside = true;
+    switch (family) {
+        case Family::C0:
+        case Family::C1: inside = p >= 1; break;
+        case Family::O0: inside = p > half && p <= 1; break;
+        case Family::O1: inside = p >= half; break;
+    }
+    if (!inside)
+        throw InputError(std::string("p = ") + decimal_or_fraction_text(p) + " is outside the domain of " +
+                         to_string(family) + " (" + family_domain_text(family) + ")");
+}
+
+namespace {
+
+template <class I>
+void finish(FamilyLattice<I>& lattice, const I& p, Basis<I> basis) {
+    lattice.volume = enclose_ball_volume(p, 3);
+    lattice.determinant = determinant(basis);
+    lattice.phi = *lattice.volume / abs(*lattice.determinant);
+    lattice.basis = std::move(basis);
+    lattice.status = FamilyStatus::certified;
+}
+
+// C0 and C1: certify the root s in a small box by interval Newton, then prove [0, box) free
+// of roots, so that s is the smallest positive root as Eqs. 2 and 9 require.
+template <class I>
+FamilyLattice<I> enclose_cubic(Family family, const I& p) {
+    FamilyLattice<I> lattice{family};
+    const auto field = field_of(p);
+    const double p_guess = mid_double(p);
+    const double s_guess = guess_root([&](const auto& s) { return cubic_equation(family, s, p_guess); }, 0.2);
+    const CubicConstants<I> constants = cubic_constants(p);
+    auto equation = [&](const auto& s) { return cubic_equation(family, s, constants); };
+    const double spread = std::max(width_upper(p), 1e-12);
+    // Newton stops within 2^8 units in the last place of s: quadratic convergence jumps from
+    // far above that to the rounding floor, so the stall test would only cost one more step.
+    const double target_width = std::ldexp(s_guess, -static_cast<int>(field.bits()) + 8);
+    for (double radius = 1e-11 + 4 * spread; radius < 0.5; radius *= 64) {
+        // The lower end is cut to 24 significant bits so that a ball backend (30-bit radius)
+        // holds [0, lower end] exactly: the root-free piece below must not reach the root.
+        // It also sits at least 2^-20 s below the guess: a ball holding [0, lower end] + t
+        // rounds its radius by 2^-30 of its width, which must not reach the root.
+        int exponent = 0;
+        const double mantissa = std::frexp(std::max(0.0, std::min(s_guess - radius, s_guess * (1 - 0x1p-20))), &exponent);
+        const double lower_end = std::ldexp(std::floor(std::ldexp(mantissa, 24)), exponent - 24);
+        const I box = from_doubles(field.integer(0), lower_end, s_guess + radius);
+        NewtonResult<I> newton = newton_isolate(equation, box, target_width, 200);
+        // The refined box must lie in the box the proof started from: every root there lies in
+        // it, and [0, lower end) is shown root-free below, so the root is the smallest.
+        if (newton.status != RootStatus::unique || !contains(newton.initial_box, newton.box)) continue;
+        const I below = hull(field.integer(0), lower_point(newton.initial_box));
+        auto vector_equation = [&](const auto& x) { return std::vector{equation(x[0])}; };
+        lattice.search = isolate_roots(vector_equation, std::vector<I>{below}, 1e-6, 256, 0.0);
+        const bool root_free = std::all_of(lattice.search.begin(), lattice.search.end(),
+                                           [](const RootLeaf<I>& leaf) { return leaf.status == RootStatus::none; });
+        lattice.search.push_back({{newton.initial_box}, RootStatus::unique, {newton.box}, newton.reason});
+        lattice.branches.push_back({{{"s", newton.box}}, lattice.search.back()});
+        if (!root_free) {
+            lattice.message = "could not prove [0, s) free of roots";
+            return lattice;
+        }
+        lattice.parameters = {{"s", newton.box}};
+        finish(lattice, p, cubic_basis_with_shift(family, newton.box, constants.shift));
+        return lattice;
+    }
+    lattice.message = "interval Newton did not isolate the root s";
+    return lattice;
+}
+
+template <class I>
+FamilyLattice<I> enclose_o0(const I& p) {
+    FamilyLattice<I> lattice{Family::O0};
+    lattice.parameters = {{"c", octahedral_height(p)}};
+    finish(lattice, p, o0_basis(p));
+    return lattice;
+}
+
+// p*_o = ln 3 / ln 4, where the Minkowski branch of Eq. 12 reaches q = 0 (NOTES.md).
+template <class I>
+I octahedral_crossover(const I& like) {
+    const auto field = field_of(like);
+    return log(field.integer(3)) / log(field.integer(4));
+}
+
+// O1: every root of Eq. 12 with q >= 0 (roots come in pairs q, -q) in the box
+// [0, 1] x [-1, 1], which holds all real roots since 2|q|^2p + |s|^2p = 1.
+template <class I>
+FamilyLattice<I> enclose_o1(const I& p) {
+    FamilyLattice<I> lattice{Family::O1};
+    const auto field = field_of(p);
+    auto equations = [&](const auto& x) { return o1_equations(x, p); };
+    const std::vector<I> box{hull(field.integer(0), field.integer(1)), hull(field.integer(-1), field.integer(1))};
+    lattice.search = isolate_roots(equations, box, 1e-7, 20000, 0.0);
+    std::size_t undecided = 0;
+    for (const RootLeaf<I>& leaf : lattice.search) {
+        if (leaf.status == RootStatus::unique) lattice.branches.push_back({{{"q", leaf.root[0]}, {"s", leaf.root[1]}}, leaf});
+        if (leaf.status == RootStatus::undecided) ++undecided;
+    }
+    std::sort(lattice.branches.begin(), lattice.branches.end(), [](const RootBranch<I>& a, const RootBranch<I>& b) {
+        return mid_double(a.unknowns[1].value) > mid_double(b.unknowns[1].value);
+    });
+    if (undecided > 0) {
+        lattice.message = std::to_string(undecided) + " pieces of the (q, s) box undecided";
+        return lattice;
+    }
+    const I crossover = octahedral_crossover(p);
+    const bool before = certainly_less(p, crossover), after = certainly_less(crossover, p);
+    if (after) {
+        lattice.status = FamilyStatus::no_lattice;
+        lattice.message = "the Minkowski branch of Eq. (12) ends at p*_o = ln3/ln4; here Eq. (12) has " +
+                          std::to_string(lattice.branches.size()) + " root(s) with q >= 0, none on that branch";
+        return lattice;
+    }
+    if (!before || lattice.branches.size() != 2) {
+        lattice.message = "expected two roots of Eq. (12) below p*_o, found " + std::to_string(lattice.branches.size());
+        return lattice;
+    }
+    // Below p*_o the Minkowski branch is the root with the larger s (NOTES.md, "O1 branches").
+    const I& q = lattice.branches[0].unknowns[0].value;
+    const I& s = lattice.branches[0].unknowns[1].value;
+    lattice.parameters = {{"l", o1_l(p)}, {"q", q}, {"s", s}};
+    finish(lattice, p, o1_basis(q, s, p));
+    return lattice;
+}
+
+}  // namespace
+
+template <class I>
+FamilyLattice<I> enclose_family_at(Family family, const I& p) {
+    switch (family) {
+        case Family::C0:
+        case Family::C1: return enclose_cubic(family, p);
+        case Family::O0: return enclose_o0(p);
+        case Family::O1: return enclose_o1(p);
+    }
+    return FamilyLattice<I>{family};
+}
+
+FamilyLattice<DInterval> enclose_family(Family family, const Rational& p, const DoubleField& field) {
+    require_in_domain(family, p);
+    return enclose_family_at(family, field.rational(p));
+}
+
+FamilyLattice<Ball> enclose_family(Family family, const Rational& p, const BallField& field) {
+    require_in_domain(family, p);
+    return enclose_family_at(family, field.rational(p));
+}
+
+template FamilyLattice<DInterval> enclose_family_at(Family, const DInterval&);
+template FamilyLattice<Ball> enclose_family_at(Family, const Ball&);
+
+}  // namespace superpack
