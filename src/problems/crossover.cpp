@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "superpack/solve/guess.hpp"
+#include "superpack/solve/partition.hpp"
 
 namespace superpack {
 
@@ -284,70 +285,53 @@ CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Fiel
     const int first_pieces = 150;
     const double min_width = 1e-9;
     const std::size_t max_pieces = 20000;
-    std::vector<std::pair<double, double>> pending;
     std::vector<double> ends;
     for (int k = 0; k < first_pieces; ++k) ends.push_back(left_end + (right_end - left_end) * k / first_pieces);
     ends.push_back(right_end);
-    for (std::size_t k = ends.size() - 1; k > 0; --k) pending.push_back({ends[k - 1], ends[k]});
+    std::vector<std::vector<DInterval>> first;
+    for (std::size_t k = 1; k < ends.size(); ++k) first.push_back({interval_from(DInterval(0.0), ends[k - 1], ends[k])});
     std::size_t root_pieces = 0;
     // The sign of g at the left end of the next piece (pieces are proved left to right):
     // g(1) = 0 exactly (NOTES.md: both lattices are FCC); after a piece, the sign it proved
     // at its right end. Unknown after an undecided piece.
     bool left_known = true;
     int left_sign = 0;
-    while (!pending.empty()) {
-        const auto [a, b] = pending.back();
-        pending.pop_back();
+    auto classify = [&](const std::vector<DInterval>& box) -> Classification<SignPiece> {
+        const double a = box[0].lower(), b = box[0].upper();
         const Ball p = interval_from(like, a, b);
-        SignPiece piece{interval_from(DInterval(0.0), a, b), PieceClaim::undecided, "", std::nullopt, std::nullopt};
+        SignPiece piece{box[0], PieceClaim::undecided, "", std::nullopt, std::nullopt};
         auto record = [&](PieceClaim claim, const std::string& reason, int right_sign) {
             piece.claim = claim;
             piece.reason = reason;
-            result.pieces.push_back(piece);
-            left_known = claim != PieceClaim::undecided;
+            left_known = true;
             left_sign = right_sign;
-        };
-        auto split = [&](const std::string& why) {
-            if (b - a < min_width || result.pieces.size() + pending.size() + 2 > max_pieces) {
-                record(PieceClaim::undecided, why + "; subdivision budget reached", 0);
-                return;
-            }
-            const double middle = a + (b - a) / 2;
-            pending.push_back({middle, b});
-            pending.push_back({a, middle});
+            return decided(piece);
         };
         const auto c0_root = certify_piece_root(Family::C0, p);
         const auto c1_root = certify_piece_root(Family::C1, p);
-        if (!c0_root || !c1_root) {
-            split("s not certified over the piece");
-            continue;
-        }
+        if (!c0_root || !c1_root) return not_decided<SignPiece>("s not certified over the piece");
         // The direct enclosure first: it needs no derivative.
         const Ball direct = c1_root->phi - c0_root->phi;
         if (a != left_end && (certainly_negative(direct) || certainly_positive(direct))) {
             const int sign = certainly_negative(direct) ? -1 : 1;
             piece.difference = outward_double(direct);
-            record(sign < 0 ? PieceClaim::negative : PieceClaim::positive, "g excludes 0 on the piece (direct)", sign);
-            continue;
+            return record(sign < 0 ? PieceClaim::negative : PieceClaim::positive, "g excludes 0 on the piece (direct)", sign);
         }
         Jet<Ball> g{like, like};
         try {
             g = difference_jet(*c0_root, *c1_root, p);
         } catch (const EvaluationFailed& failure) {
-            split(failure.what());
-            continue;
+            return not_decided<SignPiece>(failure.what());
         }
         piece.derivative = outward_double(g.derivative);
         // Monotone from a known end: g(a) <= 0 and g' < 0 give g < 0 on (a, b]; likewise > 0.
         if (left_known && certainly_negative(g.derivative) && left_sign <= 0) {
             piece.difference = outward_double(g.value);
-            record(PieceClaim::negative, "g(a) <= 0 (the piece to the left, or g(1) = 0) and g' < 0 on the piece", -1);
-            continue;
+            return record(PieceClaim::negative, "g(a) <= 0 (the piece to the left, or g(1) = 0) and g' < 0 on the piece", -1);
         }
         if (left_known && certainly_positive(g.derivative) && left_sign >= 0) {
             piece.difference = outward_double(g.value);
-            record(PieceClaim::positive, "g(a) >= 0 (the piece to the left, or g(1) = 0) and g' > 0 on the piece", 1);
-            continue;
+            return record(PieceClaim::positive, "g(a) >= 0 (the piece to the left, or g(1) = 0) and g' > 0 on the piece", 1);
         }
         // The direct enclosure, and if it does not decide, the mean value form
         // g(m) + g'(P)(P - m) met with it.
@@ -361,18 +345,21 @@ CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Fiel
         piece.difference = outward_double(value);
         if (a != left_end && (certainly_negative(value) || certainly_positive(value))) {
             const int sign = certainly_negative(value) ? -1 : 1;
-            record(sign < 0 ? PieceClaim::negative : PieceClaim::positive, "g excludes 0 on the piece (mean value form)",
-                   sign);
-            continue;
+            return record(sign < 0 ? PieceClaim::negative : PieceClaim::positive,
+                          "g excludes 0 on the piece (mean value form)", sign);
         }
         if (a != left_end && !contains_zero(g.derivative) && refine_root(field.integer(0), a, b, digits, result)) {
-            record(PieceClaim::root, "interval Newton: exactly one zero of g in the piece (g' excludes 0)",
-                   certainly_positive(g.derivative) ? 1 : -1);
             ++root_pieces;
-            continue;
+            return record(PieceClaim::root, "interval Newton: exactly one zero of g in the piece (g' excludes 0)",
+                          certainly_positive(g.derivative) ? 1 : -1);
         }
-        split("neither g nor g' decided");
-    }
+        return not_decided<SignPiece>("neither g nor g' decided");
+    };
+    auto give_up = [&](const std::vector<DInterval>& box, const std::string& reason) {
+        left_known = false;
+        return SignPiece{box[0], PieceClaim::undecided, reason, std::nullopt, std::nullopt};
+    };
+    result.pieces = partition(first, classify, give_up, SubdivisionLimits{min_width, max_pieces});
 
     std::size_t undecided = 0, root_index = result.pieces.size();
     for (std::size_t k = 0; k < result.pieces.size(); ++k) {
@@ -439,27 +426,27 @@ T octahedral_equation(const T& p) {
     return constant_like(p, 2) * octahedral_height(p) - constant_like(p, 1);
 }
 
-// Sign of Eq. (6) on [a, b] by direct evaluation, bisecting until decided.
+// Sign of Eq. (6) on [a, b] by direct evaluation, bisecting until decided (at most about
+// (b - a) / 1e-9 pieces; in practice a few dozen).
 void octahedral_signs(double a, double b, std::vector<SignPiece>& pieces) {
-    const DInterval p = interval_from(DInterval(0.0), a, b);
-    SignPiece piece{p, PieceClaim::undecided, "", std::nullopt, std::nullopt};
-    const Jet<DInterval> value = octahedral_equation(variable(p));
-    piece.difference = value.value;
-    piece.derivative = value.derivative;
-    if (certainly_negative(value.value) || certainly_positive(value.value)) {
+    auto classify = [](const std::vector<DInterval>& box) -> Classification<SignPiece> {
+        SignPiece piece{box[0], PieceClaim::undecided, "", std::nullopt, std::nullopt};
+        const Jet<DInterval> value = octahedral_equation(variable(box[0]));
+        piece.difference = value.value;
+        piece.derivative = value.derivative;
+        if (!certainly_negative(value.value) && !certainly_positive(value.value))
+            return not_decided<SignPiece>("Eq. (6) not decided");
         piece.claim = certainly_negative(value.value) ? PieceClaim::negative : PieceClaim::positive;
         piece.reason = "Eq. (6) excludes 0 on the piece";
-        pieces.push_back(piece);
-        return;
-    }
-    if (b - a < 1e-9) {
-        piece.reason = "Eq. (6) not decided; subdivision budget reached";
-        pieces.push_back(piece);
-        return;
-    }
-    const double middle = a + (b - a) / 2;
-    octahedral_signs(a, middle, pieces);
-    octahedral_signs(middle, b, pieces);
+        return decided(piece);
+    };
+    auto give_up = [](const std::vector<DInterval>& box, const std::string& reason) {
+        const Jet<DInterval> value = octahedral_equation(variable(box[0]));
+        return SignPiece{box[0], PieceClaim::undecided, reason, value.value, value.derivative};
+    };
+    const std::vector<SignPiece> found = partition(std::vector<std::vector<DInterval>>{{interval_from(DInterval(0.0), a, b)}},
+                                                   classify, give_up, SubdivisionLimits{1e-9, 1000000});
+    pieces.insert(pieces.end(), found.begin(), found.end());
 }
 
 }  // namespace

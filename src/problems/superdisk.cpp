@@ -2,7 +2,10 @@
 // Method and proofs: NOTES.md section 7.
 #include "superpack/problems/superdisk.hpp"
 
-#include <functional>
+#include <algorithm>
+#include <optional>
+
+#include "superpack/solve/minimise.hpp"
 
 namespace superpack {
 
@@ -210,55 +213,50 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
         return report;
     }
 
-    // Best-first branch and bound over t in [0, 1] for min D(t).
-    I best = report.lambda1.status == RootStatus::unique ? report.lambda1.determinant / field.integer(4) : I(one * field.integer(10));
-    report.optimal_lattice = report.lambda1;
-    if (report.lambda0.status == RootStatus::unique &&
-        mid_double(report.lambda0.determinant) < mid_double(field.integer(4) * best)) {
-        best = report.lambda0.determinant / field.integer(4);
-        report.optimal_lattice = report.lambda0;
-    }
-    auto better_point = [&](const I& t) {
-        const HexagonLattice<I> lattice = lattice_at(t, q, report.area);
-        if (lattice.status != RootStatus::unique) return;
-        const I d = lattice.determinant / field.integer(4);
-        if (mid_double(upper_point(d)) < mid_double(upper_point(best))) {
-            best = d;
-            report.optimal_lattice = lattice;
+    // Best-first branch and bound over t in [0, 1] for min D(t) (solve/minimise.hpp).
+    using Piece = HexagonPiece<I>;
+    std::optional<PointValue<I, HexagonLattice<I>>> known;
+    for (const HexagonLattice<I>* family : {&report.lambda1, &report.lambda0})
+        if (family->status == RootStatus::unique) {
+            const I d = family->determinant / field.integer(4);
+            if (!known || mid_double(d) < mid_double(known->value)) known = PointValue<I, HexagonLattice<I>>{d, *family};
         }
+    auto value_at = [&](const std::vector<I>& t) -> std::optional<PointValue<I, HexagonLattice<I>>> {
+        const HexagonLattice<I> lattice = lattice_at(t[0], q, report.area);
+        if (lattice.status != RootStatus::unique) return std::nullopt;
+        return PointValue<I, HexagonLattice<I>>{lattice.determinant / field.integer(4), lattice};
     };
-    auto bound_piece = [&](const I& t) {
-        HexagonPiece<I> piece{t, PieceVerdict::undecided, zero, {}, zero, "", {}, LowerBoundMethod::naive, zero};
+    auto bound_piece = [&](const std::vector<I>& box) {
+        const I& t = box[0];
+        Piece piece{t, PieceVerdict::undecided, zero, {}, zero, "", {}, LowerBoundMethod::naive, zero};
+        auto bounded = [&](PieceVerdict verdict, std::string reason) {
+            piece.verdict = verdict;
+            piece.reason = std::move(reason);
+            return BoundedBox<I, Piece>{box, true, piece.lower_bound, piece, piece.reason};
+        };
         const Evaluation<I> at = evaluate(t, q, 1e-9 + 1e-3 * width_upper(t));
         if (at.status != RootStatus::unique) {
             piece.reason = "contact system not certified on the piece: " + at.reason;
-            return piece;
+            return BoundedBox<I, Piece>{box, false, zero, piece, piece.reason};
         }
         piece.v = at.v;
         piece.search_box = at.search_box;
         piece.lower_bound = at.value;
-        if (!at.derivative_known) {
-            piece.verdict = PieceVerdict::bounded;
-            piece.reason = "naive enclosure of D (" + at.reason + ")";
-            return piece;
-        }
+        if (!at.derivative_known) return bounded(PieceVerdict::bounded, "naive enclosure of D (" + at.reason + ")");
         piece.derivative = at.derivative;
         const bool increasing = certainly_positive(at.derivative), decreasing = certainly_negative(at.derivative);
         if (increasing || decreasing) {
             const HexagonLattice<I> end = lattice_at(increasing ? lower_point(t) : upper_point(t), q, report.area);
             if (end.status == RootStatus::unique) {
-                piece.verdict = PieceVerdict::monotone;
                 piece.lower_bound = end.determinant / field.integer(4);
                 piece.method = increasing ? LowerBoundMethod::left_end : LowerBoundMethod::right_end;
-                piece.reason = increasing ? "D' > 0: minimum at the left end" : "D' < 0: minimum at the right end";
-                return piece;
+                return bounded(PieceVerdict::monotone,
+                               increasing ? "D' > 0: minimum at the left end" : "D' < 0: minimum at the right end");
             }
         }
         // Mean-value form around the midpoint, intersected with the naive enclosure.
         const I center = midpoint(t);
         const Evaluation<I> middle = evaluate(center, q, 1e-9, false);
-        piece.verdict = PieceVerdict::bounded;
-        piece.reason = "naive and mean-value enclosures of D";
         if (middle.status == RootStatus::unique) {
             const I form = middle.value + at.derivative * (t - center);
             I meet = form;
@@ -268,81 +266,40 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
                 piece.center = center;
             }
         }
-        return piece;
+        return bounded(PieceVerdict::bounded, "naive and mean-value enclosures of D");
     };
-    auto key = [](const HexagonPiece<I>& piece) { return mid_double(lower_point(piece.lower_bound)); };
-    auto later = [&](const HexagonPiece<I>& a, const HexagonPiece<I>& b) { return key(a) > key(b); };
-    std::priority_queue<HexagonPiece<I>, std::vector<HexagonPiece<I>>, decltype(later)> open(later);
-    std::vector<HexagonPiece<I>> closed;
-    const double min_width = 1e-14;
+    MinimiseOptions search;
+    search.relative_tolerance = options.relative_tolerance;
+    search.max_pieces = options.max_pieces;
     // A piece whose contact system is not yet certified is split (its v(t) varies too much
-    // for one Krawczyk box); below 1e-8 it is kept as undecided, never dropped.
-    std::function<void(HexagonPiece<I>)> file = [&](HexagonPiece<I> piece) {
-        if (piece.verdict != PieceVerdict::undecided) {
-            open.push(piece);
-            return;
-        }
-        if (width_upper(piece.t) < 1e-12 || closed.size() + open.size() + 2 > options.max_pieces) {
-            closed.push_back(piece);
-            return;
-        }
-        const I center = midpoint(piece.t);
-        file(bound_piece(hull(lower_point(piece.t), center)));
-        file(bound_piece(hull(center, upper_point(piece.t))));
-    };
-    file(bound_piece(hull(zero, one)));
-    while (!open.empty()) {
-        HexagonPiece<I> top = open.top();
-        const double upper = mid_double(upper_point(best));
-        if (certainly_less(upper_point(best), lower_point(top.lower_bound))) {
-            // Everything still open lies above the best lattice: discard it all.
-            while (!open.empty()) {
-                HexagonPiece<I> piece = open.top();
-                open.pop();
-                piece.verdict = PieceVerdict::discarded;
-                piece.reason = "lower bound of D above the determinant of a certified lattice; " + piece.reason;
-                closed.push_back(piece);
-            }
-            break;
-        }
-        if (upper - key(top) <= options.relative_tolerance * upper) break;  // stopping rule only
-        if (closed.size() + open.size() + 2 > options.max_pieces || width_upper(top.t) < min_width) break;
-        open.pop();
-        const I center = midpoint(top.t);
-        better_point(center);
-        file(bound_piece(hull(lower_point(top.t), center)));
-        file(bound_piece(hull(center, upper_point(top.t))));
-    }
-    // Pieces still open: their lower bounds enter the minimum.
-    bool undecided = false;
-    I lowest = best;
+    // for one Krawczyk box); below 1e-12 it is kept as undecided, never dropped.
+    search.min_undecided_width = 1e-12;
+    search.min_width = 1e-14;
+    const Minimum<I, Piece, HexagonLattice<I>> minimum =
+        minimise<I, Piece, HexagonLattice<I>>({hull(zero, one)}, bound_piece, value_at, known, search);
     std::vector<I> near_optimal;  // pieces that may hold a minimiser
-    for (const auto& piece : closed)
-        if (piece.verdict == PieceVerdict::undecided) undecided = true;
-    while (!open.empty()) {
-        HexagonPiece<I> piece = open.top();
-        open.pop();
-        if (certainly_less(upper_point(best), lower_point(piece.lower_bound))) {
+    for (const auto& leaf : minimum.leaves) {
+        Piece piece = leaf.data;
+        if (leaf.fate == LeafFate::discarded) {
             piece.verdict = PieceVerdict::discarded;
             piece.reason = "lower bound of D above the determinant of a certified lattice; " + piece.reason;
-        } else {
-            lowest = hull(lowest, lower_point(piece.lower_bound));
+        } else if (leaf.fate == LeafFate::candidate) {
             near_optimal.push_back(piece.t);
         }
-        closed.push_back(piece);
+        report.pieces.push_back(piece);
     }
-    std::sort(closed.begin(), closed.end(), [](const HexagonPiece<I>& a, const HexagonPiece<I>& b) {
-        return mid_double(lower_point(a.t)) < mid_double(lower_point(b.t));
+    std::sort(report.pieces.begin(), report.pieces.end(), [](const Piece& x, const Piece& y) {
+        return mid_double(lower_point(x.t)) < mid_double(lower_point(y.t));
     });
-    report.pieces = closed;
-    if (undecided) {
+    if (minimum.best) report.optimal_lattice = minimum.best->witness;
+    if (!minimum.certified) {
         report.status = OptimumStatus::undecided;
         report.attained_by = "undecided";
         report.message = "some pieces of the parameter range could not be certified";
         return report;
     }
     report.status = OptimumStatus::certified;
-    report.optimal_determinant = field.integer(4) * hull(lower_point(lowest), upper_point(best));
+    report.optimal_determinant = field.integer(4) * *minimum.lowest;
     report.optimal_phi = report.area / report.optimal_determinant;
     // Merge touching near-optimal pieces into the components of the argmin enclosure.
     std::sort(near_optimal.begin(), near_optimal.end(),

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "superpack/cert/certificate.hpp"
+#include "superpack/solve/bisection.hpp"
+#include "superpack/solve/root_partition.hpp"
 
 namespace superpack {
 
@@ -28,8 +30,8 @@ Json box_json(const std::vector<I>& box) {
 namespace certificate_detail {
 
 // Rebuilds the bisection tree behind a flat list of RootLeaf pieces (isolate_roots returns
-// them in depth-first order, left before right) by replaying its split rule: the widest
-// component, cut at its midpoint. The operations are deterministic, so each piece matches
+// them in depth-first order, left before right) by replaying its split rule, the widest
+// component cut at its midpoint (solve/bisection.hpp). The operations are deterministic, so each piece matches
 // a node exactly; a mismatch means the rule changed, and no certificate is written.
 template <class I, class F>
 class PartitionWriter {
@@ -40,16 +42,11 @@ public:
         if (next_ < leaves_.size() && same_box(leaves_[next_].piece, box)) return leaf(leaves_[next_++]);
         if (depth > 200 || next_ >= leaves_.size())
             throw std::runtime_error("certificate: the search pieces do not form the bisection tree");
-        std::size_t widest = 0;
-        for (std::size_t k = 1; k < box.size(); ++k)
-            if (width_upper(box[k]) > width_upper(box[widest])) widest = k;
-        const I center = midpoint(box[widest]);
-        std::vector<I> left = box, right = box;
-        left[widest] = hull(lower_point(box[widest]), center);
-        right[widest] = hull(center, upper_point(box[widest]));
+        const std::size_t widest = widest_component(box);
+        const auto halves = bisect_widest(box);
         Json cases = Json::array();
-        cases.push_back(node(left, depth + 1));
-        cases.push_back(node(right, depth + 1));
+        cases.push_back(node(halves.first, depth + 1));
+        cases.push_back(node(halves.second, depth + 1));
         return Json{{"kind", "split"}, {"box", box_json(box)}, {"dimension", widest}, {"cases", cases}};
     }
 

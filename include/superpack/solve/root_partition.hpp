@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "superpack/solve/krawczyk.hpp"
+#include "superpack/solve/partition.hpp"
 
 namespace superpack {
 
@@ -17,29 +18,18 @@ struct RootLeaf {
     std::string reason;
 };
 
-// Branch and bound over `box`: the returned pieces partition it, and every piece is
+// Subdivision of `box` (partition.hpp): the returned pieces partition it, and every piece is
 // `none` (a component of f excludes 0 there, or Krawczyk proved no zero), `unique`
 // (Krawczyk proved exactly one zero in its interior) or `undecided` (narrower than
 // `min_width`, or the budget of `max_pieces` ran out: such pieces are kept, never dropped).
 template <class I, class F>
 std::vector<RootLeaf<I>> isolate_roots(const F& f, const std::vector<I>& box, double min_width,
                                        std::size_t max_pieces, double target_width) {
-    std::vector<RootLeaf<I>> leaves;
-    std::vector<std::vector<I>> pending{box};
-    while (!pending.empty()) {
-        std::vector<I> piece = pending.back();
-        pending.pop_back();
-        bool excluded = false;
-        for (const I& value : f(piece)) excluded = excluded || !contains_zero(value);
-        if (excluded) {
-            leaves.push_back({piece, RootStatus::none, {}, "a component of f has one sign"});
-            continue;
-        }
+    auto classify = [&](const std::vector<I>& piece) -> Classification<RootLeaf<I>> {
+        for (const I& value : f(piece))
+            if (!contains_zero(value)) return decided(RootLeaf<I>{piece, RootStatus::none, {}, "a component of f has one sign"});
         const KrawczykResult<I> proof = krawczyk_isolate(f, piece, target_width, 60);
-        if (proof.status == RootStatus::none) {
-            leaves.push_back({piece, RootStatus::none, {}, proof.reason});
-            continue;
-        }
+        if (proof.status == RootStatus::none) return decided(RootLeaf<I>{piece, RootStatus::none, {}, proof.reason});
         if (proof.status == RootStatus::unique) {
             // Every root in the piece lies in proof.box, which holds exactly one root. A ball
             // backend rounds intersections outward, so proof.box may poke out of the piece:
@@ -50,30 +40,16 @@ std::vector<RootLeaf<I>> isolate_roots(const F& f, const std::vector<I>& box, do
                 inside = inside && contains(piece[k], proof.box[k]);
                 apart = apart || !intersect(meet, piece[k], proof.box[k]);
             }
-            if (inside) {
-                leaves.push_back({piece, RootStatus::unique, proof.box, proof.reason});
-                continue;
-            }
-            if (apart) {
-                leaves.push_back({piece, RootStatus::none, {}, "the only root near the piece lies outside it"});
-                continue;
-            }
+            if (inside) return decided(RootLeaf<I>{piece, RootStatus::unique, proof.box, proof.reason});
+            if (apart)
+                return decided(RootLeaf<I>{piece, RootStatus::none, {}, "the only root near the piece lies outside it"});
         }
-        std::size_t widest = 0;
-        for (std::size_t k = 1; k < piece.size(); ++k)
-            if (width_upper(piece[k]) > width_upper(piece[widest])) widest = k;
-        if (width_upper(piece[widest]) < min_width || leaves.size() + pending.size() + 2 > max_pieces) {
-            leaves.push_back({piece, RootStatus::undecided, {}, proof.reason + "; subdivision budget reached"});
-            continue;
-        }
-        const I center = midpoint(piece[widest]);
-        std::vector<I> left = piece, right = piece;
-        left[widest] = hull(lower_point(piece[widest]), center);
-        right[widest] = hull(center, upper_point(piece[widest]));
-        pending.push_back(right);
-        pending.push_back(left);
-    }
-    return leaves;
+        return not_decided<RootLeaf<I>>(proof.reason);
+    };
+    auto give_up = [](const std::vector<I>& piece, const std::string& reason) {
+        return RootLeaf<I>{piece, RootStatus::undecided, {}, reason};
+    };
+    return partition(std::vector<std::vector<I>>{box}, classify, give_up, SubdivisionLimits{min_width, max_pieces});
 }
 
 }  // namespace superpack
