@@ -1,4 +1,5 @@
 // superpack verify FILE [--json]: replays a certificate with the independent checker (checker/).
+#include <filesystem>
 #include <memory>
 
 #include "checker/verifier.hpp"
@@ -13,9 +14,28 @@ struct VerifyOptions {
     bool json = false;
 };
 
+// A directory, FIFO or device is no certificate: refused before reading (a FIFO would block).
+void require_regular_file(const std::string& path) {
+    std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    if (status.type() == std::filesystem::file_type::not_found)
+        throw Failure(exit_usage, "unreadable certificate " + path + ": no such file");
+    if (error) throw Failure(exit_usage, "unreadable certificate " + path + ": " + error.message());
+    if (status.type() == std::filesystem::file_type::directory)
+        throw Failure(exit_usage, "unreadable certificate " + path + ": a directory, not a file");
+    if (status.type() != std::filesystem::file_type::regular)
+        throw Failure(exit_usage, "unreadable certificate " + path + ": not a regular file");
+}
+
 int run(const VerifyOptions& options) {
     using namespace superpack_checker;
-    const VerifyReport report = verify_file(options.file);
+    require_regular_file(options.file);
+    VerifyReport report;
+    try {
+        report = verify_file(options.file);
+    } catch (const std::exception& error) {
+        throw Failure(exit_usage, "unreadable certificate " + options.file + ": " + error.what());
+    }
     if (options.json) {
         Json document = base_header_json("verify");
         document["file"] = options.file;
@@ -28,7 +48,7 @@ int run(const VerifyOptions& options) {
             document["failing_step"] = report.path;
             document["message"] = report.message;
         }
-        std::cout << document.dump(2) << "\n";
+        print_json(document);
     } else if (report.verdict == Verdict::valid) {
         std::cout << "valid: " << report.claim_text << "\n  (" << report.steps << " steps checked with MPFI at "
                   << report.precision << " bits)\n";
