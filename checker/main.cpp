@@ -1,6 +1,7 @@
 // superpack-verify FILE [--json]: replays a superpack certificate with the independent checker
 // and says what it proved. Exit 0 valid, 1 invalid (naming the first failing step), 2 unreadable.
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -26,7 +27,20 @@ int fail(bool json, int code, const std::string& message) {
     return code;
 }
 
+// A directory, FIFO or device is no certificate: refused before reading (a FIFO would block).
+std::string not_a_certificate(const std::string& path) {
+    std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    if (status.type() == std::filesystem::file_type::not_found) return "no such file";
+    if (error) return error.message();
+    if (status.type() == std::filesystem::file_type::directory) return "a directory, not a file";
+    if (status.type() != std::filesystem::file_type::regular) return "not a regular file";
+    return "";
+}
+
 int run(const std::string& file, bool json) {
+    const std::string refusal = not_a_certificate(file);
+    if (!refusal.empty()) return fail(json, exit_unreadable, "unreadable certificate " + file + ": " + refusal);
     const VerifyReport report = verify_file(file);
     const std::string where = report.path.empty() ? "" : " at " + report.path;
     if (json) {

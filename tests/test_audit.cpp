@@ -79,3 +79,18 @@ TEST_CASE("merged verdict ranges keep every piece") {
     CHECK(merged[0].lo == Rational(3));
     CHECK(merged[0].hi == Rational(4));
 }
+
+TEST_CASE("the audit's piece limit: no bisection beyond max_pieces, the rest undecided and named") {
+    // On a piece holding p*_o, O0 stays undecided at every depth: only the limit stops the bisection.
+    AuditSettings settings{1, 30};
+    settings.max_pieces = 5;
+    const AuditRange range{parse_rational("0.7924812"), parse_rational("0.7924813"), {}, "test"};
+    const AuditResult result = audit_family(Family::O0, range, settings);
+    check_cover(result);
+    CHECK(result.pieces.size() == 5);
+    std::size_t limited = 0;
+    for (const AuditPiece& piece : result.pieces) limited += piece.reason.find("piece limit 5 reached") != std::string::npos;
+    CHECK(limited > 0);
+    settings.initial_pieces = 6;
+    CHECK_THROWS_AS(audit_family(Family::O0, range, settings), InputError);
+}

@@ -1,5 +1,6 @@
 // The command line as a user meets it: exit codes, one-line errors, one JSON document.
 #include <array>
+#include <filesystem>
 #include <cstdio>
 #include <memory>
 
@@ -12,9 +13,11 @@ struct Run {
     std::string out, err;
 };
 
-Run run(const std::string& arguments) {
+// Runs the binary with `arguments` (shell words) in `directory` (empty: the current one).
+Run run(const std::string& arguments, const std::string& directory = "") {
     const std::string err_path = std::tmpnam(nullptr);
-    const std::string command = std::string(SUPERPACK_BINARY) + " " + arguments + " 2>" + err_path;
+    const std::string command = (directory.empty() ? "" : "cd '" + directory + "' && ") + std::string(SUPERPACK_BINARY) + " " +
+                                arguments + " 2>" + err_path;
     Run result{0, "", ""};
     FILE* pipe = popen(command.c_str(), "r");
     REQUIRE(pipe != nullptr);
@@ -34,6 +37,46 @@ double width_of(const nlohmann::json& enclosure) {
     arb_set_str(lo.get(), enclosure["lo"].get<std::string>().c_str(), 2100);
     arb_set_str(hi.get(), enclosure["hi"].get<std::string>().c_str(), 2100);
     return superpack::mid_double(hi - lo);
+}
+
+// A fresh empty directory, removed afterwards.
+struct Scratch {
+    std::string path;
+    Scratch() {
+        std::string pattern = (std::filesystem::temp_directory_path() / "superpack-cli-XXXXXX").string();
+        REQUIRE(mkdtemp(pattern.data()) != nullptr);
+        path = pattern;
+    }
+    ~Scratch() { std::filesystem::remove_all(path); }
+};
+
+std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+// An error as the contract wants it: the exit code, one line on stderr (at most 300 characters
+// and a newline) naming the problem, never "internal error"; with --json one document on stdout
+// {"error": ..., "exit": code}.
+void check_error(const std::string& arguments, int code, const std::string& needle, bool with_json = true) {
+    INFO(arguments);
+    const Run plain = run(arguments);
+    INFO(plain.err);
+    CHECK(plain.status == code);
+    CHECK(lines(plain.err) == 1);
+    CHECK(plain.err.size() <= 301);
+    CHECK(plain.err.find("internal error") == std::string::npos);
+    CHECK(plain.err.find(needle) != std::string::npos);
+    if (!with_json) return;
+    const Run json = run(arguments + " --json");
+    CHECK(json.status == code);
+    CHECK(lines(json.err) == 1);
+    // Exactly one document: parse rejects a second one after the first.
+    const nlohmann::json document = nlohmann::json::parse(json.out, nullptr, false);
+    CHECK(document.is_object());
+    if (!document.is_object()) return;
+    CHECK(document.value("exit", -1) == code);
+    CHECK(document.value("error", std::string()).find(needle) != std::string::npos);
+    // `verify` runs the checker's own executable, which names itself.
+    const bool verify = arguments.rfind("verify", 0) == 0;
+    CHECK(document.value("tool", std::string()) == (verify ? "superpack-verify" : "superpack"));
 }
 
 }  // namespace
@@ -84,4 +127,136 @@ TEST_CASE("every subcommand has --help") {
         CHECK(result.status == 0);
         CHECK(result.out.find("--") != std::string::npos);
     }
+}
+
+TEST_CASE("issue 11 item 8: inputs that were internal errors get the right exit and one line") {
+    // Beyond the supported range of p: refused with the limit.
+    check_error("check-lattice --p 1e17 --basis '2,0,0;0,2,0;0,0,2'", 2, "10^6");
+    check_error("superdisk --p 1e308", 2, "10^-6 <= p <= 10^6");
+    check_error("superdisk --p 1e-400", 2, "10^-6 <= p <= 10^6");
+    check_error("density --family C0 --p 1000001", 2, "10^6");
+    // A legal p > 1/2 whose binary64 enclosure touches 1/2: undecided at this precision, with the hint,
+    // and the hint works.
+    check_error("density --family O0 --p 0.5000000000000000001", 4, "try --digits 30");
+    // At 30 digits phi is certified (the lattice is nearly singular there: whether it packs may stay undecided).
+    const Run thirty = run("density --family O0 --p 0.5000000000000000001 --digits 30 --json");
+    CHECK((thirty.status == 0 || thirty.status == 4));
+    CHECK(nlohmann::json::parse(thirty.out)["status"] == "certified");
+    check_error("superdisk --p 0.5000000000000000001", 4, "try --digits 30");
+    // A directory where a file or a directory should be, refused before any computation.
+    const Scratch scratch;
+    const std::string file = scratch.path + "/plain";
+    std::ofstream(file) << "x";
+    check_error("audit --family C0 --output-directory " + file, 2, "not a directory");
+    check_error("audit --family C0 --output-directory " + scratch.path + "/missing", 2, "does not exist");
+    CHECK(!std::filesystem::exists(scratch.path + "/missing"));
+    check_error("verify " + scratch.path, 2, "unreadable");
+    check_error("verify " + scratch.path + "/none.json", 2, "unreadable");
+}
+
+TEST_CASE("--json: usage errors too print exactly one JSON document") {
+    check_error("density --p 2", 2, "family");
+    check_error("density --family C9 --p 2", 2, "C9");
+    check_error("nosuchcommand", 2, "subcommand");
+    check_error("density --family C0 --p 2 --digits 0", 2, "--digits");
+    // A certified impossibility prints its own document, and no second one.
+    const Run impossible = run("density --family O1 --p 1 --json");
+    CHECK(impossible.status == 3);
+    CHECK(nlohmann::json::parse(impossible.out)["status"] == "no_lattice");
+}
+
+TEST_CASE("issue 11 item 11: limits are stated and enforced, contradictions refused, undecided is exit 4") {
+    check_error("density --family C0 --p 1.5 --digits 100000", 2, "from 1 to");
+    check_error("density --family C0 --p " + std::string(400, '1'), 2, "at most 100 characters");
+    // (--scan prints CSV: with --json it is a contradiction, checked last.)
+    check_error("superdisk --scan 1:2:0 --csv", 2, "step", false);
+    check_error("superdisk --scan 1:2:1e-400 --csv", 2, "at most", false);
+    check_error("superdisk --p 1 --scan 1:2:0.5 --csv", 2, "not both");
+    check_error("superdisk --p 1 --csv", 2, "--csv needs --scan");
+    check_error("superdisk --scan 1:2:0.5", 2, "--scan needs --csv");
+    check_error("audit --family C0 --p-range 0.5:0.6", 2, "outside the domain of C0 (p >= 1)");
+    check_error("audit --family O0 --p-range 0.9:1.1", 2, "outside the domain of O0");
+    check_error("audit --family C0 --p-range 1:1e400", 2, "10^6");
+    check_error("audit --p-range 1:2", 2, "needs one --family");
+    check_error("audit --family C0 --pieces 100000", 2, "--pieces");
+    check_error("audit --family C0 --depth 99", 2, "--depth");
+    check_error("check-lattice --p 2 --basis '" + std::string(2000, '1') + ",0,0;0,1,0;0,0,1'", 2, "--basis");
+    // A long error line is cut: the 5000-character --scan text is echoed, the line keeps 300 characters.
+    check_error("superdisk --scan " + std::string(5000, '1') + " --csv", 2, "--scan wants a:b:h", false);
+    const Run scan_json = run("superdisk --scan 1:2:0.5 --csv --json");
+    CHECK(scan_json.status == 2);
+    CHECK(nlohmann::json::parse(scan_json.out)["error"].get<std::string>().find("not --json") != std::string::npos);
+    // Undecided answers exit 4 after printing them: the superdisk below 1/2 (nothing certified)...
+    const Run concave = run("superdisk --p 0.3");
+    CHECK(concave.status == 4);
+    CHECK(concave.out.find("undecided") != std::string::npos);
+    CHECK(lines(concave.err) == 1);
+    const Run concave_json = run("superdisk --p 0.3 --json");
+    CHECK(concave_json.status == 4);
+    CHECK(nlohmann::json::parse(concave_json.out)["status"] == "not_applicable");
+    // ... and a report with an undecided cell, after its whole table and log.
+    const Scratch scratch;
+    const Run report = run("report --p-values 0.5000000000000000001,2 --output " + scratch.path + "/report.json");
+    CHECK(report.status == 4);
+    CHECK(report.out.find("?  (undecided)") != std::string::npos);
+    CHECK(report.out.find("full enclosures") != std::string::npos);
+    CHECK(std::filesystem::exists(scratch.path + "/report.json"));
+    CHECK(report.err.find("report: undecided") != std::string::npos);
+}
+
+TEST_CASE("report and audit: the default out/ is created once, a named missing directory is refused") {
+    const Scratch scratch;
+    const Run report = run("report --p-values 2", scratch.path);
+    CHECK(report.status == 0);
+    CHECK(std::filesystem::is_regular_file(scratch.path + "/out/report.json"));
+    const Run missing = run("report --p-values 2 --output elsewhere/report.json", scratch.path);
+    CHECK(missing.status == 2);
+    CHECK(missing.err.find("does not exist") != std::string::npos);
+    CHECK(!std::filesystem::exists(scratch.path + "/elsewhere"));
+    // A symbolic link at the log is refused, its target untouched.
+    std::ofstream(scratch.path + "/victim") << "precious";
+    std::filesystem::create_symlink(scratch.path + "/victim", scratch.path + "/link.json");
+    const Run link = run("report --p-values 2 --output link.json", scratch.path);
+    CHECK(link.status == 2);
+    CHECK(link.err.find("symbolic link") != std::string::npos);
+    std::ifstream victim(scratch.path + "/victim");
+    CHECK(std::string(std::istreambuf_iterator<char>(victim), {}) == "precious");
+}
+
+TEST_CASE("issue 11 item 12: density says whether the lattice is a packing, tables honour --digits, report aligns") {
+    const Run overlapping = run("density --family O1 --p 0.6");
+    CHECK(overlapping.status == 0);
+    CHECK(overlapping.out.find("not a packing: phi is V/|det|, no density") != std::string::npos);
+    CHECK(overlapping.out.find("witness (1, -1, -1)") != std::string::npos);
+    CHECK(overlapping.out.find("  e3 ") != std::string::npos);  // the basis is printed
+    const auto document = nlohmann::json::parse(run("density --family O1 --p 0.6 --json").out);
+    CHECK(document["packing"]["verdict"] == "overlapping");
+    CHECK(document["note"] == "not a packing: phi is V/|det|, no density");
+    const Run packing = run("density --family C0 --p 1.5");
+    CHECK(packing.out.find("packing     yes, 12 contacts") != std::string::npos);
+    CHECK(packing.out.find("density") != std::string::npos);
+    CHECK(nlohmann::json::parse(run("density --family C0 --p 1.5 --json").out)["packing"]["verdict"] == "admissible");
+    // --digits 30: the table prints 30 significant digits (8.03779649631764414964990296...e-01).
+    const Run thirty = run("density --family C0 --p 1.5 --digits 30");
+    CHECK(thirty.out.find("[8.03779649631764414965811418597e-01, 8.03779649631764414965811418598e-01]") != std::string::npos);
+    // report: every column starts at the same offset in every line, for long p too.
+    const Scratch scratch;
+    const Run report = run("report --p-values 1.1,23/20,0.5000000000000000001,2 --output " + scratch.path + "/r.json");
+    std::istringstream table(report.out);
+    std::string line;
+    std::getline(table, line);  // the title
+    std::getline(table, line);
+    const std::size_t c1 = line.find("C1"), densest = line.find("densest");
+    REQUIRE(c1 != std::string::npos);
+    int rows = 0;
+    while (std::getline(table, line) && line.rfind("phi enclosures", 0) != 0) {
+        INFO(line);
+        CHECK(line.size() > densest);
+        CHECK(line[c1 - 1] == ' ');
+        CHECK(line[c1] != ' ');
+        CHECK(line[densest - 1] == ' ');
+        CHECK(line[densest] != ' ');
+        ++rows;
+    }
+    CHECK(rows == 4);
 }

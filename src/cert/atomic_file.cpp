@@ -1,26 +1,144 @@
 #include "superpack/cert/atomic_file.hpp"
 
+#include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <cstdio>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
-#include <stdexcept>
+#include <vector>
 
 namespace superpack {
 
-void write_atomically(const std::string& path, const std::string& content) {
+namespace {
+
+const char* const partial_marker = ".superpack-partial-";
+
+std::string system_error_text() { return std::strerror(errno); }
+
+struct Location {
+    std::string directory, name;
+};
+
+Location locate(const std::string& path) {
     const std::filesystem::path target(path);
-    if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
-    const std::string temporary = path + ".tmp." + std::to_string(getpid());
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) throw std::runtime_error("cannot write " + temporary);
-    const bool written = std::fwrite(content.data(), 1, content.size(), file) == content.size() &&
-                         std::fflush(file) == 0 && fsync(fileno(file)) == 0;
-    const bool closed = std::fclose(file) == 0;
-    if (!written || !closed || std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw std::runtime_error("cannot write " + path);
+    const std::string name = target.filename().string();
+    if (path.empty() || name.empty() || name == "." || name == "..")
+        throw FileError("cannot write '" + path + "': not a file name");
+    return {target.has_parent_path() ? target.parent_path().string() : std::string("."), name};
+}
+
+bool process_is_gone(long pid) { return pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH; }
+
+// "<name>.superpack-partial-<pid>-XXXXXX" of a writer that no longer runs: regular files only.
+void remove_stale_temporaries(const Location& location) {
+    DIR* directory = opendir(location.directory.c_str());
+    if (directory == nullptr) return;
+    const std::string prefix = location.name + partial_marker;
+    std::vector<std::string> stale;
+    while (const dirent* entry = readdir(directory)) {
+        const std::string entry_name = entry->d_name;
+        if (entry_name.compare(0, prefix.size(), prefix) != 0) continue;
+        const std::string rest = entry_name.substr(prefix.size());
+        const auto dash = rest.find('-');
+        if (dash == std::string::npos || dash == 0 || dash > 9 || rest.size() != dash + 7) continue;
+        if (rest.find_first_not_of("0123456789") != dash) continue;
+        if (!process_is_gone(std::stol(rest.substr(0, dash)))) continue;
+        struct stat status {};
+        const std::string full = location.directory + "/" + entry_name;
+        if (lstat(full.c_str(), &status) == 0 && S_ISREG(status.st_mode)) stale.push_back(full);
     }
+    closedir(directory);
+    for (const std::string& file : stale) unlink(file.c_str());
+}
+
+bool write_all(int descriptor, const std::string& content) {
+    std::size_t done = 0;
+    while (done < content.size()) {
+        const ssize_t written = write(descriptor, content.data() + done, content.size() - done);
+        if (written < 0 && errno == EINTR) continue;
+        if (written <= 0) return false;
+        done += static_cast<std::size_t>(written);
+    }
+    return true;
+}
+
+mode_t creation_mode() {
+    const mode_t mask = umask(0);
+    umask(mask);
+    return 0666 & ~mask;
+}
+
+// The rename is durable only once the directory entry is on disk. Some file systems cannot
+// fsync a directory (EINVAL): there is nothing more to do then.
+void sync_directory(const std::string& path, const std::string& target) {
+    const int descriptor = open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (descriptor < 0) throw FileError("wrote '" + target + "' but cannot open its directory to sync it: " + system_error_text());
+    const bool synced = fsync(descriptor) == 0 || errno == EINVAL;
+    const std::string reason = synced ? "" : system_error_text();
+    close(descriptor);
+    if (!synced) throw FileError("wrote '" + target + "' but cannot sync its directory: " + reason);
+}
+
+}  // namespace
+
+void require_writable_target(const std::string& path) {
+    const Location location = locate(path);
+    struct stat status {};
+    if (stat(location.directory.c_str(), &status) != 0) {
+        if (errno == ENOENT) throw FileError("cannot write '" + path + "': directory '" + location.directory + "' does not exist");
+        throw FileError("cannot write '" + path + "': directory '" + location.directory + "': " + system_error_text());
+    }
+    if (!S_ISDIR(status.st_mode))
+        throw FileError("cannot write '" + path + "': '" + location.directory + "' is not a directory");
+    if (lstat(path.c_str(), &status) != 0) {
+        if (errno == ENOENT) return;
+        throw FileError("cannot write '" + path + "': " + system_error_text());
+    }
+    if (S_ISLNK(status.st_mode))
+        throw FileError("refusing to write '" + path + "': it is a symbolic link (superpack replaces regular files only; "
+                        "remove the link or name the file itself)");
+    if (!S_ISREG(status.st_mode))
+        throw FileError("refusing to write '" + path + "': it exists and is not a regular file (" +
+                        (S_ISDIR(status.st_mode) ? "a directory" : S_ISFIFO(status.st_mode) ? "a FIFO"
+                         : S_ISSOCK(status.st_mode) ? "a socket" : "a device") + ")");
+}
+
+void write_atomically(const std::string& path, const std::string& content) {
+    require_writable_target(path);
+    const Location location = locate(path);
+    remove_stale_temporaries(location);
+    std::string temporary = location.directory + "/" + location.name + partial_marker + std::to_string(getpid()) + "-XXXXXX";
+    // mkostemp opens with O_CREAT | O_EXCL: it never follows a link planted at the name.
+    const int descriptor = mkostemp(temporary.data(), O_CLOEXEC);
+    if (descriptor < 0) throw FileError("cannot write '" + path + "': cannot create a temporary file: " + system_error_text());
+    bool written = fchmod(descriptor, creation_mode()) == 0 && write_all(descriptor, content) && fsync(descriptor) == 0;
+    std::string reason = written ? "" : system_error_text();
+    if (close(descriptor) != 0 && written) {
+        written = false;
+        reason = system_error_text();
+    }
+    if (!written) {
+        unlink(temporary.c_str());
+        throw FileError("cannot write '" + path + "': " + reason);
+    }
+    if (rename(temporary.c_str(), path.c_str()) != 0) {
+        const std::string rename_reason = system_error_text();
+        unlink(temporary.c_str());
+        throw FileError("cannot write '" + path + "': " + rename_reason);
+    }
+    sync_directory(location.directory, path);
+}
+
+void create_default_directory(const std::string& path) {
+    if (mkdir(path.c_str(), 0777) == 0) return;
+    if (errno != EEXIST) throw FileError("cannot create the directory '" + path + "': " + system_error_text());
+    struct stat status {};
+    if (stat(path.c_str(), &status) != 0 || !S_ISDIR(status.st_mode))
+        throw FileError("cannot use '" + path + "' as the output directory: it exists and is not a directory");
 }
 
 }  // namespace superpack

@@ -1,5 +1,6 @@
 // superpack audit [--family F] [--p-range a:b] [--second-root] [--pieces N] [--depth D] [--json]
 //                [--certificate FILE] (one family, the published lattice)
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -19,16 +20,31 @@ struct AuditOptions {
     int pieces = 0, depth = -1;  // 0 / -1: the family's default
 };
 
-AuditRange parse_range(const std::string& text, const AuditRange& claimed) {
+// Limits (README): --pieces and --depth, and AuditSettings::max_pieces for the whole audit.
+const int max_initial_pieces = static_cast<int>(AuditSettings{}.max_pieces);
+constexpr int max_depth = 30;
+
+// a:b inside the family's domain (a piece outside it would certify a lattice the family does not define).
+AuditRange parse_range(const std::string& text, Family family, const AuditRange& claimed) {
     if (text.empty()) return claimed;
     const auto colon = text.find(':');
     if (colon == std::string::npos) throw Failure(exit_usage, "--p-range '" + text + "': expected a:b");
-    AuditRange range{parse_rational(text.substr(0, colon)), parse_rational(text.substr(colon + 1)), {}, "user range"};
+    AuditRange range{parse_p(text.substr(0, colon), "--p-range a"), parse_p(text.substr(colon + 1), "--p-range b"), {},
+                     "user range"};
     if (!(range.lo < range.hi)) throw Failure(exit_usage, "--p-range '" + text + "': need a < b");
-    if (range.lo < Rational(1, 2)) throw Failure(exit_usage, "--p-range '" + text + "': the criterion needs p >= 1/2");
+    for (const Rational& end : {range.lo, range.hi}) {
+        try {
+            require_in_domain(family, end);
+        } catch (const InputError&) {
+            throw Failure(exit_usage, "--p-range '" + text + "' is outside the domain of " + to_string(family) + " (" +
+                                          family_domain_text(family) + ")");
+        }
+    }
     for (const Rational& b : claimed.breaks) range.breaks.push_back(b);  // keep p*_o bracketed
     return range;
 }
+
+bool undecided(const AuditPiece& piece) { return piece.outcome == "undecided" || piece.outcome == "overlapping_at_point"; }
 
 std::string range_text(const AuditPiece& piece) {
     return "[" + decimal_or_fraction_text(piece.lo) + ", " + decimal_or_fraction_text(piece.hi) + "]";
@@ -47,24 +63,46 @@ void write_audit_certificate(const std::string& path, const AuditResult& result)
     try {
         write_certificate(path, certificate);
     } catch (const std::runtime_error& error) {
-        throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+        throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
     }
     std::cerr << "audit: certificate " << path << " (" << decided_pieces(certificate) << " of " << result.pieces.size()
               << " pieces with a certified verdict)\n";
 }
 
-int run(const AuditOptions& options) {
-    require_rounding_self_test();
+int run(const AuditOptions& options, bool default_directory) {
     std::vector<Family> families = options.family.empty() ? all_families() : std::vector{parse_family(options.family)};
     if (options.second_root && (families.size() != 1 || families[0] != Family::O1))
         throw Failure(exit_usage, "--second-root needs --family O1");
     if (!options.certificate.empty() && (families.size() != 1 || options.second_root))
         throw Failure(exit_usage, "--certificate needs one --family and the published lattice (no --second-root)");
+    if (!options.p_range.empty() && families.size() != 1)
+        throw Failure(exit_usage, "--p-range needs one --family (the families' domains differ)");
+    if (options.pieces != 0 && (options.pieces < 1 || options.pieces > max_initial_pieces))
+        throw Failure(exit_usage, "--pieces must be from 1 to " + std::to_string(max_initial_pieces) + ", got " +
+                                      std::to_string(options.pieces));
+    if (options.depth != -1 && (options.depth < 0 || options.depth > max_depth))
+        throw Failure(exit_usage, "--depth must be from 0 to " + std::to_string(max_depth) + ", got " + std::to_string(options.depth));
+    std::vector<AuditRange> ranges;
+    for (Family family : families) {
+        AuditRange range = parse_range(options.p_range, family, claimed_audit_range(family));
+        if (options.second_root && options.p_range.empty()) range = {Rational(1, 2), Rational(2), range.breaks, "[1/2, 2]"};
+        ranges.push_back(range);
+    }
+    // Every path is checked before hours of work: the default out/ is created, a named directory must exist.
+    if (default_directory) create_default_directory(options.output_directory);
+    auto file_of = [&](Family family) {
+        const AuditResult named{family, options.second_root ? AuditBranch::o1_second_root : AuditBranch::published, {}, {}};
+        return options.output_directory + "/" + std::filesystem::path(audit_file_name(named)).filename().string();
+    };
+    for (Family family : families) require_writable_target(file_of(family));
+    if (!options.certificate.empty()) require_writable_target(options.certificate);
+    require_rounding_self_test();
     Json document = header_json("audit", DoubleField{}, 15);
     Json audits = Json::array();
-    for (Family family : families) {
-        AuditRange range = parse_range(options.p_range, claimed_audit_range(family));
-        if (options.second_root && options.p_range.empty()) range = {Rational(1, 2), Rational(2), range.breaks, "[1/2, 2]"};
+    std::size_t undecided_pieces = 0;
+    for (std::size_t index = 0; index < families.size(); ++index) {
+        const Family family = families[index];
+        const AuditRange& range = ranges[index];
         AuditSettings settings = default_audit_settings(family);
         if (options.pieces > 0) settings.initial_pieces = options.pieces;
         if (options.depth >= 0) settings.max_depth = options.depth;
@@ -73,8 +111,8 @@ int run(const AuditOptions& options) {
                                                 options.second_root ? AuditBranch::o1_second_root : AuditBranch::published,
                                                 [](const std::string& line) { std::cerr << "audit: " << line << "\n"; });
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::filesystem::create_directories(options.output_directory);
-        const std::string file = options.output_directory + "/" + std::filesystem::path(audit_file_name(result)).filename().string();
+        const std::string file = file_of(family);
+        undecided_pieces += std::count_if(result.pieces.begin(), result.pieces.end(), undecided);
         Json full = header_json("audit", DoubleField{}, 15);
         full.update(audit_json(result));
         write_atomically(file, full.dump(1) + "\n");
@@ -99,9 +137,13 @@ int run(const AuditOptions& options) {
     }
     if (options.json) {
         document["audits"] = audits;
-        std::cout << document.dump(2) << "\n";
+        document["undecided_pieces"] = undecided_pieces;
+        print_json(document);
     }
-    // Every piece is accounted for (undecided ones with their reason): the audit itself succeeded.
+    // Every piece is accounted for and written, but an undecided piece leaves the audit undecided.
+    if (undecided_pieces > 0)
+        throw Failure(exit_undecided, "audit: undecided: " + std::to_string(undecided_pieces) +
+                                          " piece(s) without a verdict for every p (listed with their reasons)");
     return exit_ok;
 }
 
@@ -111,15 +153,19 @@ void add_audit(CLI::App& app) {
     auto options = std::make_shared<AuditOptions>();
     CLI::App* command = app.add_subcommand("audit", "Certify a family over its claimed p range, piece by piece");
     command->add_option("--family", options->family, "C0, C1, O0 or O1 (default: all four)");
-    command->add_option("--p-range", options->p_range, "a:b exact (default: the claimed range)");
+    command->add_option("--p-range", options->p_range, "a:b exact, inside the family's domain (default: the claimed range); needs --family");
     command->add_flag("--second-root", options->second_root, "O1: audit the lattice of the other real root of Eq. (12)");
-    command->add_option("--pieces", options->pieces, "initial pieces per range (default 16; O1: 300)");
-    command->add_option("--depth", options->depth, "bisections of an undecided piece (default 12; O1: 3)");
-    command->add_option("--output-directory", options->output_directory, "where audit-<family>.json goes (default out)");
+    command->add_option("--pieces", options->pieces,
+                        "initial pieces per range, 1 to " + std::to_string(max_initial_pieces) + " (default 16; O1: 300)");
+    command->add_option("--depth", options->depth,
+                        "bisections of an undecided piece, 0 to " + std::to_string(max_depth) + " (default 12; O1: 3); at most " +
+                            std::to_string(AuditSettings{}.max_pieces) + " pieces in all");
+    CLI::Option* directory = command->add_option("--output-directory", options->output_directory,
+                                                 "an existing directory for audit-<family>.json (default out, created if missing)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_option("--certificate", options->certificate,
                         "with one --family: write a certificate of the piece verdicts (replay it with `superpack verify FILE`)");
-    command->callback([options] { run(*options); });
+    command->callback([options, directory] { run(*options, directory->count() == 0); });
 }
 
 namespace {

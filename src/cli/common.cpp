@@ -1,23 +1,63 @@
 #include "common.hpp"
 
+#include <algorithm>
+
 #include "superpack/arith/self_test.hpp"
 
 namespace superpack::cli {
 
-Rational parse_p(const std::string& text) {
-    const Rational p = parse_rational(text);
-    if (p <= 0) throw InputError("p must be positive, got '" + text + "'");
+namespace {
+
+bool printed_json = false;
+
+}  // namespace
+
+Rational parse_number(const std::string& text, const std::string& option) {
+    if (text.size() > max_number_characters)
+        throw InputError(option + ": a number has at most " + std::to_string(max_number_characters) + " characters, got " +
+                         std::to_string(text.size()));
+    return parse_rational(text);
+}
+
+Rational parse_p(const std::string& text, const std::string& option) {
+    const Rational p = parse_number(text, option);
+    if (p <= 0) throw InputError(option + ": p must be positive, got '" + text + "'");
+    static const Rational smallest(1, 1000000), largest(1000000);
+    if (p < smallest || p > largest)
+        throw InputError(option + ": p = " + text + " is outside the supported range " + supported_p_text);
     return p;
 }
 
-long parse_digits(const std::string& text) {
-    bool digits_only = !text.empty() && text.size() <= 6;
+long parse_digits(const std::string& text, long maximum) {
+    bool digits_only = !text.empty() && text.size() <= 7;
     for (char c : text) digits_only = digits_only && c >= '0' && c <= '9';
     const long digits = digits_only ? std::stol(text) : 0;
-    if (digits < 1 || digits > 100000)
-        throw InputError("--digits must be a whole number from 1 to 100000, got '" + text + "'");
+    if (digits < 1 || digits > maximum)
+        throw InputError("--digits must be a whole number from 1 to " + std::to_string(maximum) + " for this command, got '" +
+                         text + "'");
     return digits;
 }
+
+std::string undecided_at_precision(const std::string& what, long digits, long maximum_digits) {
+    const std::string precision = digits == 0 ? "binary64" : std::to_string(digits) + "-digit";
+    std::string message = "undecided at " + precision + " precision (" + what +
+                          ": an enclosure is too wide for the function's contract)";
+    const long next = digits == 0 ? std::min(30L, maximum_digits) : std::min(2 * digits, maximum_digits);
+    if (maximum_digits == 0) return message;  // a command without --digits
+    if (next > digits)
+        message += "; try --digits " + std::to_string(next);
+    else
+        message += "; --digits " + std::to_string(maximum_digits) + " is this command's limit";
+    return message;
+}
+
+void print_json(const Json& document) {
+    // Invalid UTF-8 typed by the user is replaced, never a reason to fail.
+    std::cout << document.dump(2, ' ', false, Json::error_handler_t::replace) << "\n";
+    printed_json = true;
+}
+
+bool json_printed() { return printed_json; }
 
 std::vector<std::pair<std::string, AddSubcommand>>& subcommand_registry() {
     static std::vector<std::pair<std::string, AddSubcommand>> registry;
@@ -31,7 +71,8 @@ SubcommandRegistration::SubcommandRegistration(const char* name, AddSubcommand a
 void require_rounding_self_test() {
     const SelfTestReport report = run_rounding_self_test();
     if (!report.passed)
-        throw Failure(exit_invalid, "rounding self-test failed (" + report.failures.front() + "); no certificate written");
+        throw Failure(exit_undecided, "rounding self-test failed (" + report.failures.front() +
+                                          "): nothing can be certified on this machine");
 }
 
 }  // namespace superpack::cli

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,7 @@ enum ExitCode : int {
     exit_usage = 2,        // bad usage or input
     exit_impossible = 3,   // a certified mathematical impossibility (e.g. no root)
     exit_undecided = 4,    // the computation could not decide at this precision
+    exit_internal = 5,     // a bug in superpack (an exception no input should cause)
 };
 
 // A failure that carries its exit code; main prints its message as one line.
@@ -27,19 +29,45 @@ struct Failure : std::runtime_error {
     Failure(int exit_code, const std::string& message) : std::runtime_error(message), code(exit_code) {}
 };
 
-// p > 0, read exactly.
-Rational parse_p(const std::string& text);
-// --digits: a whole number from 1 to 100000.
-long parse_digits(const std::string& text);
+// Limits of every command (README, "The command line"). The numerics are supported for p in
+// [10^-6, 10^6]; a number is typed in at most 100 characters; an error line is cut to 300.
+inline const char* const supported_p_text = "10^-6 <= p <= 10^6";
+constexpr std::size_t max_number_characters = 100;
+constexpr std::size_t max_error_characters = 300;
+
+// An exact number typed for `option` (at most max_number_characters).
+Rational parse_number(const std::string& text, const std::string& option);
+// p for `option`: exact, within the supported range.
+Rational parse_p(const std::string& text, const std::string& option = "--p");
+// --digits: a whole number from 1 to `maximum` (each command states its own).
+long parse_digits(const std::string& text, long maximum);
+
+// The message of an answer left undecided because a function's contract refused an
+// enclosure (std::domain_error: too wide at this precision), with the precision to try next
+// (digits 0: binary64; maximum_digits 0: the command has no --digits).
+std::string undecided_at_precision(const std::string& what, long digits, long maximum_digits);
 
 // Runs `body(field, digits)` with binary64 intervals when no --digits was given (digits 15)
-// and with Arb balls at bits_for_digits(D) otherwise.
+// and with Arb balls at bits_for_digits(D) otherwise. A contract refusal of the numerics on a
+// legal input is an undecided answer (exit 4), not an error.
 template <class Body>
-int with_field(const std::string& digits_text, const Body& body) {
-    if (digits_text.empty()) return body(DoubleField{}, 15L);
-    const long digits = parse_digits(digits_text);
-    return body(BallField{bits_for_digits(digits)}, digits);
+int with_field(const std::string& digits_text, long maximum_digits, const Body& body) {
+    const long digits = digits_text.empty() ? 0 : parse_digits(digits_text, maximum_digits);
+    try {
+        if (digits == 0) return body(DoubleField{}, 15L);
+        return body(BallField{bits_for_digits(digits)}, digits);
+    } catch (const std::domain_error& error) {
+        throw Failure(exit_undecided, undecided_at_precision(error.what(), digits, maximum_digits));
+    }
 }
+
+// Digits of a table entry: what --digits asked for, or 17 (enough for binary64) without it.
+inline int table_digits(long digits, bool arb) { return arb ? static_cast<int>(digits) : 17; }
+
+// The one JSON document of a command on stdout. main prints an error document instead
+// only when no document was printed.
+void print_json(const Json& document);
+bool json_printed();
 
 // The rounding self-test gate: throws Failure unless directed rounding works here.
 void require_rounding_self_test();

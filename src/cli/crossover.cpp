@@ -3,9 +3,10 @@
 #include <memory>
 
 #include "common.hpp"
+#include "superpack/arith/decimal.hpp"
+#include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/crossover_certificate.hpp"
 #include "superpack/problems/crossover_json.hpp"
-#include "superpack/arith/decimal.hpp"
 
 namespace superpack::cli {
 
@@ -27,13 +28,15 @@ void row(const std::string& name, const std::optional<I>& x, int digits) {
               << text.hi << "]  width " << width_text(*x) << "\n";
 }
 
-int print_digits(long digits) { return static_cast<int>(std::max(15L, digits + 2)); }
+// Measured (README): 300 digits take under a second. Beyond, the refinement's target width
+// 10^-D (a binary64 number) underflows and the digits asked for would not be delivered.
+constexpr long max_digits = 300;
 
 template <class I>
-void print_cubic(const CubicCrossover<I>& crossover, long digits) {
+void print_cubic(const CubicCrossover<I>& crossover, int digits) {
     std::cout << "cubic crossover: phi_C0(p) = phi_C1(p), g = phi_C1 - phi_C0 on [1, 10]\n";
-    row("p*_c", crossover.p, print_digits(digits));
-    row("phi*_c", crossover.phi, print_digits(digits));
+    row("p*_c", crossover.p, digits);
+    row("phi*_c", crossover.phi, digits);
     std::size_t counts[4] = {0, 0, 0, 0};
     for (const auto& piece : crossover.pieces) ++counts[static_cast<int>(piece.claim)];
     std::cout << "  pieces of [1, 10]: " << crossover.pieces.size() << " (negative " << counts[0] << ", positive "
@@ -46,16 +49,16 @@ void print_cubic(const CubicCrossover<I>& crossover, long digits) {
 }
 
 template <class I>
-void print_octahedral(const OctahedralCrossover<I>& crossover, long digits) {
+void print_octahedral(const OctahedralCrossover<I>& crossover, int digits) {
     std::cout << "octahedral crossover: Eq. (6) 2 (1 - 2^(1-2p))^(1/(2p)) = 1 on (1/2, 1]\n";
     if (crossover.newton) {
         const std::optional<I> root = crossover.newton->box;
-        row("root of (6)", root, print_digits(digits));
+        row("root of (6)", root, digits);
     }
-    row("ln3/ln4", crossover.ln3_over_ln4, print_digits(digits));
+    row("ln3/ln4", crossover.ln3_over_ln4, digits);
     std::cout << "  root of Eq. (6) overlaps ln3/ln4: " << to_string(crossover.closed_form) << "\n";
-    row("phi_O0", crossover.o0.phi, print_digits(digits));
-    row("phi_O1", crossover.o1_phi, print_digits(digits));
+    row("phi_O0", crossover.o0.phi, digits);
+    row("phi_O1", crossover.o1_phi, digits);
     std::cout << "  O0 and O1 (q = 0, s = 1) densities meet: " << to_string(crossover.densities_meet)
               << "; same lattice (B_O0 = U B_O1): " << (crossover.same_lattice ? "yes" : "not shown") << "\n";
     if (!crossover.certified) std::cout << "  not certified: " << crossover.message << "\n";
@@ -64,8 +67,12 @@ void print_octahedral(const OctahedralCrossover<I>& crossover, long digits) {
 int run(const CrossoverOptions& options) {
     if (options.kind != "cubic" && options.kind != "octahedral")
         throw Failure(exit_usage, "crossover: expected 'cubic' or 'octahedral', got '" + options.kind + "'");
-    if (!options.certificate.empty()) require_rounding_self_test();
-    return with_field(options.digits, [&](const auto& field, long digits) {
+    if (!options.certificate.empty()) {
+        require_writable_target(options.certificate);
+        require_rounding_self_test();
+    }
+    return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
+        const int print_digits = table_digits(digits, !options.digits.empty());
         const auto start = std::chrono::steady_clock::now();
         Json document = header_json("crossover", field, digits);
         bool certified = false;
@@ -75,14 +82,14 @@ int run(const CrossoverOptions& options) {
             std::cerr << "crossover: proving the sign of phi_C1 - phi_C0 on [1, 10]...\n";
             const auto crossover = certify_cubic_crossover(field, digits);
             document.update(cubic_crossover_json(crossover));
-            if (!options.json) print_cubic(crossover, digits);
+            if (!options.json) print_cubic(crossover, print_digits);
             certified = crossover.certified;
             message = crossover.message;
             if (certified && !options.certificate.empty()) certificate = cubic_crossover_certificate(crossover, field, digits);
         } else {
             const auto crossover = certify_octahedral_crossover(field, digits);
             document.update(octahedral_crossover_json(crossover));
-            if (!options.json) print_octahedral(crossover, digits);
+            if (!options.json) print_octahedral(crossover, print_digits);
             certified = crossover.certified;
             message = crossover.message;
             if (certified && !options.certificate.empty())
@@ -91,11 +98,11 @@ int run(const CrossoverOptions& options) {
         if (!certificate.is_null()) try {
                 write_certificate(options.certificate, certificate);
             } catch (const std::runtime_error& error) {
-                throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
             }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         document["seconds"] = seconds;
-        if (options.json) std::cout << document.dump(2) << "\n";
+        if (options.json) print_json(document);
         if (!certified) throw Failure(exit_undecided, "crossover " + options.kind + ": undecided: " + message);
         return exit_ok;
     });
@@ -108,7 +115,8 @@ void add_crossover(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "crossover", "Certified crossover p*_c (C0 = C1, unique on [1, 10]) or p*_o (Eq. 6, O0 meets O1)");
     command->add_option("kind", options->kind, "cubic or octahedral")->required();
-    command->add_option("--digits", options->digits, "significant digits (Arb balls, up to 100); default binary64");
+    command->add_option("--digits", options->digits,
+                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default binary64");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_option("--certificate", options->certificate,
                         "write a certificate of the crossover (replay it with `superpack verify FILE`); nothing when undecided");

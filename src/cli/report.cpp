@@ -53,62 +53,115 @@ std::string densest(const std::vector<FamilyLattice<I>>& lattices, const std::ve
     return alone ? names : names + " (not separated)";
 }
 
-int run(const ReportOptions& options) {
-    return with_field(options.digits, [&](const auto& field, long digits) {
+// Measured (README): the whole report at 1000 digits takes about 16 s.
+constexpr long max_digits = 1000;
+constexpr std::size_t max_p_values = 100;
+
+struct Cell {
+    std::string text;
+    bool undecided = false;
+};
+
+// One family at one p: the table cell, and its entry in the JSON log.
+template <class Field, class I = typename Field::Interval>
+Cell family_cell(Family family, const Rational& p, const Field& field, int decimals, Json& entry,
+                 std::vector<FamilyLattice<I>>& lattices, std::vector<Verdict>& verdicts) {
+    try {
+        require_in_domain(family, p);
+    } catch (const InputError&) {
+        entry = Json{{"status", "outside_domain"}, {"domain", family_domain_text(family)}};
+        return {"-  (outside domain)"};
+    }
+    try {
+        FamilyLattice<I> lattice = enclose_family(family, p, field);
+        const LatticeCheck<I> check = check_family_lattice(lattice, field.rational(p));
+        entry = family_json(lattice);
+        entry["packing"] = lattice_check_json(check, false);
+        Cell cell;
+        if (lattice.phi) {
+            const DecimalEnclosure text = to_fixed(*lattice.phi, decimals);
+            const char* mark = check.verdict == Verdict::admissible ? " " : check.verdict == Verdict::overlapping ? "x" : "?";
+            cell = {"[" + text.lo + ", " + text.hi + "]" + mark, check.verdict == Verdict::undecided};
+        } else if (lattice.status == FamilyStatus::no_lattice) {
+            cell = {"-  (no lattice)"};
+        } else {
+            cell = {"?  (undecided)", true};
+        }
+        lattices.push_back(std::move(lattice));
+        verdicts.push_back(check.verdict);
+        return cell;
+    } catch (const std::domain_error& error) {
+        // A contract refusal at this precision leaves this cell undecided, not the report.
+        entry = Json{{"status", "undecided"},
+                     {"message", std::string("undecided at this precision (") + error.what() +
+                                     ": an enclosure is too wide for the function's contract)"}};
+        return {"?  (undecided)", true};
+    }
+}
+
+int run(const ReportOptions& options, bool default_output) {
+    const auto values = split(options.p_values, ',');
+    if (values.size() > max_p_values)
+        throw InputError("--p-values: at most " + std::to_string(max_p_values) + " values, got " + std::to_string(values.size()));
+    std::vector<Rational> ps;
+    for (const std::string& value : values) ps.push_back(parse_p(value, "--p-values"));
+    if (default_output) create_default_directory("out");
+    require_writable_target(options.output);
+    return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
+        const int decimals = options.digits.empty() ? 10 : static_cast<int>(digits);
         Json document = header_json("report", field, digits);
         Json rows = Json::array();
-        if (!options.json) {
-            std::cout << "Certified densities phi = V_sb / |det| of the JST 2009 lattice families (" << field.backend() << ")\n";
-            std::cout << std::left << std::setw(6) << "p";
-            for (Family family : all_families()) std::cout << std::setw(31) << to_string(family);
-            std::cout << "densest\n";
-        }
-        const auto values = split(options.p_values, ',');
+        std::vector<std::vector<std::string>> table;
+        std::size_t undecided = 0;
         for (std::size_t index = 0; index < values.size(); ++index) {
-            const Rational p = parse_p(values[index]);
+            const Rational& p = ps[index];
             std::cerr << "report: p = " << values[index] << " (" << index + 1 << "/" << values.size() << ")\n";
             std::vector<FamilyLattice<I>> lattices;
             std::vector<Verdict> verdicts;
             Json row{{"p", values[index]}, {"families", Json::object()}};
-            if (!options.json) std::cout << std::setw(6) << values[index];
+            std::vector<std::string> line{values[index]};
             for (Family family : all_families()) {
-                std::string cell = "-  (outside domain)";
-                try {
-                    lattices.push_back(enclose_family(family, p, field));
-                    const auto& lattice = lattices.back();
-                    const LatticeCheck<I> check = check_family_lattice(lattice, field.rational(p));
-                    verdicts.push_back(check.verdict);
-                    Json family_row = family_json(lattice);
-                    family_row["packing"] = lattice_check_json(check, false);
-                    row["families"][to_string(family)] = family_row;
-                    if (lattice.phi) {
-                        const DecimalEnclosure text = to_fixed(*lattice.phi, 10);
-                        const char* mark = check.verdict == Verdict::admissible ? " " : check.verdict == Verdict::overlapping ? "x" : "?";
-                        cell = "[" + text.lo + ", " + text.hi + "]" + mark;
-                    } else {
-                        cell = lattice.status == FamilyStatus::no_lattice ? "-  (no lattice)" : "?  (undecided)";
-                    }
-                } catch (const InputError&) {
-                    row["families"][to_string(family)] = Json{{"status", "outside_domain"},
-                                                              {"domain", family_domain_text(family)}};
-                }
-                if (!options.json) std::cout << std::setw(31) << cell;
+                Json entry;
+                const Cell cell = family_cell(family, p, field, decimals, entry, lattices, verdicts);
+                row["families"][to_string(family)] = entry;
+                line.push_back(cell.text);
+                if (cell.undecided) ++undecided;
             }
             row["densest"] = densest(lattices, verdicts);
-            if (!options.json) std::cout << row["densest"].template get<std::string>() << "\n";
+            line.push_back(row["densest"].template get<std::string>());
             rows.push_back(row);
+            table.push_back(line);
         }
         document["rows"] = rows;
-        const std::string text = document.dump(2) + "\n";
-        write_atomically(options.output, text);
-        if (options.json)
-            std::cout << text;
-        else
-            std::cout << "phi enclosures [lo, hi] to 10 decimals, lo rounded down and hi up. After the\n"
-                      << "enclosure: ' ' a certified packing, 'x' certified to overlap (not a packing: its phi is\n"
-                      << "no packing density), '?' undecided. 'densest' ranks certified packings only.\n"
+        document["undecided_cells"] = undecided;
+        write_atomically(options.output, document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n");
+        if (options.json) {
+            print_json(document);
+        } else {
+            std::vector<std::string> heading{"p"};
+            for (Family family : all_families()) heading.push_back(to_string(family));
+            heading.push_back("densest");
+            // Every column as wide as its widest entry: long p such as 0.5000000000000000001 stay aligned.
+            std::vector<std::size_t> widths(heading.size());
+            for (std::size_t k = 0; k < heading.size(); ++k) widths[k] = heading[k].size();
+            for (const auto& line : table)
+                for (std::size_t k = 0; k < line.size(); ++k) widths[k] = std::max(widths[k], line[k].size());
+            auto print_line = [&](const std::vector<std::string>& line) {
+                for (std::size_t k = 0; k + 1 < line.size(); ++k) std::cout << std::left << std::setw(widths[k] + 2) << line[k];
+                std::cout << line.back() << "\n";
+            };
+            std::cout << "Certified phi = V_sb / |det| of the JST 2009 lattice families (" << field.backend() << ")\n";
+            print_line(heading);
+            for (const auto& line : table) print_line(line);
+            std::cout << "phi enclosures [lo, hi] to " << decimals << " decimals, lo rounded down and hi up. After the\n"
+                      << "enclosure: ' ' a certified packing (phi is its density), 'x' certified to overlap (not a\n"
+                      << "packing: its phi is no packing density), '?' undecided. 'densest' ranks certified packings only.\n"
                       << "full enclosures and root proofs: " << options.output << "\n";
+        }
+        if (undecided > 0)
+            throw Failure(exit_undecided, "report: undecided: " + std::to_string(undecided) + " cell(s) marked '?' (reasons in " +
+                                              options.output + ")");
         return exit_ok;
     });
 }
@@ -118,11 +171,16 @@ int run(const ReportOptions& options) {
 void add_report(CLI::App& app) {
     auto options = std::make_shared<ReportOptions>();
     CLI::App* command = app.add_subcommand("report", "Every family at the paper's sample p, and the densest");
-    command->add_option("--digits", options->digits, "significant digits (Arb balls); default: binary64 intervals");
-    command->add_option("--p-values", options->p_values, "comma-separated p values")->capture_default_str();
-    command->add_option("--output", options->output, "JSON log, written atomically")->capture_default_str();
+    command->add_option("--digits", options->digits,
+                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
+    command->add_option("--p-values", options->p_values, "comma-separated p values (at most " + std::to_string(max_p_values) + "; " + supported_p_text + ")")
+        ->capture_default_str();
+    CLI::Option* output = command->add_option("--output", options->output,
+                                              "JSON log, written atomically (its directory must exist; the default out/ "
+                                              "is created)")
+                              ->capture_default_str();
     command->add_flag("--json", options->json, "print the JSON log on stdout instead of the table");
-    command->callback([options] { run(*options); });
+    command->callback([options, output] { run(*options, output->count() == 0); });
 }
 
 namespace {

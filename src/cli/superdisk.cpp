@@ -4,8 +4,9 @@
 
 #include "common.hpp"
 #include "superpack/arith/decimal.hpp"
-#include "superpack/problems/superdisk.hpp"
+#include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/superdisk_certificate.hpp"
+#include "superpack/problems/superdisk.hpp"
 
 namespace superpack::cli {
 
@@ -82,11 +83,16 @@ Json report_json(const SuperdiskReport<I>& report) {
     return document;
 }
 
+// Measured (README): the branch and bound at p = 1.25 takes about 34 s at 1000 digits.
+constexpr long max_digits = 1000;
+// A scan computes one optimum per p, about 0.07 s each in binary64: 1000 values take a minute.
+constexpr std::size_t max_scan_values = 1000;
+
 template <class I>
-void print_table(const SuperdiskReport<I>& report, const std::string& p, const char* backend) {
+void print_table(const SuperdiskReport<I>& report, const std::string& p, const char* backend, int digits) {
     std::cout << "superdisk |x|^(2p) + |y|^(2p) <= 1 at p = " << p << "  (" << backend << ")\n";
-    auto row = [](const std::string& name, const I& x) {
-        const DecimalEnclosure text = to_decimal(x, 20);
+    auto row = [digits](const std::string& name, const I& x) {
+        const DecimalEnclosure text = to_decimal(x, digits);
         std::cout << "  " << name << std::string(name.size() < 16 ? 16 - name.size() : 1, ' ') << "[" << text.lo
                   << ", " << text.hi << "]  width " << width_text(x) << "\n";
     };
@@ -116,63 +122,69 @@ std::vector<Rational> parse_scan(const std::string& text) {
     const auto first = text.find(':'), second = text.find(':', first == std::string::npos ? 0 : first + 1);
     if (first == std::string::npos || second == std::string::npos)
         throw InputError("--scan wants a:b:h, got '" + text + "'");
-    const Rational a = parse_p(text.substr(0, first)), b = parse_p(text.substr(first + 1, second - first - 1)),
-                   h = parse_p(text.substr(second + 1));
+    const Rational a = parse_p(text.substr(0, first), "--scan a"), b = parse_p(text.substr(first + 1, second - first - 1), "--scan b"),
+                   h = parse_number(text.substr(second + 1), "--scan h");
+    if (h <= 0) throw InputError("--scan a:b:h: the step h must be positive, got '" + text.substr(second + 1) + "'");
     if (b < a) throw InputError("--scan a:b:h needs a <= b");
+    Rational count = (b - a) / h;
+    count.canonicalize();
+    if (count >= max_scan_values)
+        throw InputError("--scan: at most " + std::to_string(max_scan_values) + " values of p, (b - a)/h + 1 is more");
     std::vector<Rational> values;
-    for (Rational p = a; p <= b; p += h) {
-        values.push_back(p);
-        if (values.size() > 100000) throw InputError("--scan: more than 100000 values of p");
-    }
+    for (Rational p = a; p <= b; p += h) values.push_back(p);
     return values;
-}
-
-template <class I>
-std::string csv_pair(const I& x) {
-    const DecimalEnclosure text = to_decimal(x, 17);
-    return text.lo + "," + text.hi;
 }
 
 int run_scan(const SuperdiskCliOptions& options) {
     const std::vector<Rational> values = parse_scan(options.scan);
-    return with_field(options.digits, [&](const auto& field, long digits) {
-        (void)digits;
+    return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
+        using I = typename std::decay_t<decltype(field)>::Interval;
+        const int print_digits = table_digits(digits, !options.digits.empty());
+        auto csv_pair = [print_digits](const I& x) {
+            const DecimalEnclosure text = to_decimal(x, print_digits);
+            return text.lo + "," + text.hi;
+        };
         std::cout << "p,phi_Lambda0_lo,phi_Lambda0_hi,phi_Lambda1_lo,phi_Lambda1_hi,optimal_phi_lo,optimal_phi_hi,"
                      "attained_by\n";
         int code = exit_ok;
         std::size_t done = 0;
         for (const Rational& p : values) {
             const auto report = analyse_superdisk(p, field);
-            auto family = [](const auto& lattice) { return lattice.status == RootStatus::unique ? csv_pair(lattice.phi) : std::string(","); };
+            auto family = [&](const auto& lattice) { return lattice.status == RootStatus::unique ? csv_pair(lattice.phi) : std::string(","); };
             std::cout << decimal_or_fraction_text(p) << "," << family(report.lambda0) << "," << family(report.lambda1) << ","
                       << (report.status == OptimumStatus::certified ? csv_pair(report.optimal_phi) : std::string(","))
                       << "," << report.attained_by << "\n";
-            if (report.status == OptimumStatus::undecided) code = exit_undecided;
+            if (report.status != OptimumStatus::certified) code = exit_undecided;
             if (++done % 20 == 0) std::cerr << "superdisk scan: " << done << " / " << values.size() << "\n";
         }
-        if (code != exit_ok) throw Failure(code, "superdisk scan: some optimum undecided");
+        if (code != exit_ok) throw Failure(code, "superdisk scan: undecided: some optimum is not certified (empty CSV fields)");
         return code;
     });
 }
 
 int run(const SuperdiskCliOptions& options) {
-    require_rounding_self_test();
     if (!options.scan.empty()) {
-        if (!options.csv) throw Failure(exit_usage, "--scan needs --csv");
-        if (!options.certificate.empty()) throw Failure(exit_usage, "--certificate needs --p (one p), not --scan");
+        if (!options.p.empty()) throw Failure(exit_usage, "superdisk: give one of --p and --scan, not both");
+        if (!options.csv) throw Failure(exit_usage, "superdisk: --scan needs --csv");
+        if (options.json) throw Failure(exit_usage, "superdisk: --scan prints CSV, not --json");
+        if (!options.certificate.empty()) throw Failure(exit_usage, "superdisk: --certificate needs --p (one p), not --scan");
+        require_rounding_self_test();
         return run_scan(options);
     }
+    if (options.csv) throw Failure(exit_usage, "superdisk: --csv needs --scan a:b:h");
     if (options.p.empty()) throw Failure(exit_usage, "superdisk needs --p P or --scan a:b:h --csv");
     const Rational p = parse_p(options.p);
     if (!options.certificate.empty() && p <= Rational(1, 2))
         throw Failure(exit_usage, "superdisk: no certificate for p <= 1/2 (p = 1/2 tiles; p < 1/2 is not convex)");
-    return with_field(options.digits, [&](const auto& field, long digits) {
+    if (!options.certificate.empty()) require_writable_target(options.certificate);
+    require_rounding_self_test();
+    return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         const auto report = analyse_superdisk(p, field);
         if (!options.certificate.empty() && report.status == OptimumStatus::certified) {
             try {
                 write_certificate(options.certificate, superdisk_certificate(report, p, field, digits));
             } catch (const std::runtime_error& error) {
-                throw Failure(exit_usage, std::string("error: no certificate written: ") + error.what());
+                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
             }
         }
         if (options.json) {
@@ -180,11 +192,12 @@ int run(const SuperdiskCliOptions& options) {
             document["p"] = options.p;
             document["p_exact"] = rational_text(p);
             document.update(report_json(report));
-            std::cout << document.dump(2) << "\n";
+            print_json(document);
         } else {
-            print_table(report, options.p, field.backend());
+            print_table(report, options.p, field.backend(), table_digits(digits, !options.digits.empty()));
         }
-        if (report.status == OptimumStatus::undecided)
+        // p < 1/2 (not applicable): the lattices and the optimum are printed as undecided.
+        if (report.status != OptimumStatus::certified)
             throw Failure(exit_undecided, "superdisk: undecided: " + report.message);
         return exit_ok;
     });
@@ -196,9 +209,11 @@ void add_superdisk(CLI::App& app) {
     auto options = std::make_shared<SuperdiskCliOptions>();
     CLI::App* command = app.add_subcommand(
         "superdisk", "Superdisk: the Lambda0/Lambda1 lattices and the certified optimal packing density (p >= 1/2)");
-    command->add_option("--p", options->p, "deformation parameter: a decimal (1.25) or a fraction (5/4)");
-    command->add_option("--digits", options->digits, "significant digits (Arb balls); default: binary64 intervals");
-    command->add_option("--scan", options->scan, "a:b:h: every p = a, a + h, ..., <= b (with --csv)");
+    command->add_option("--p", options->p, std::string("deformation parameter: a decimal (1.25) or a fraction (5/4); ") + supported_p_text);
+    command->add_option("--digits", options->digits,
+                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
+    command->add_option("--scan", options->scan,
+                        "a:b:h: every p = a, a + h, ..., <= b (with --csv; at most " + std::to_string(max_scan_values) + " values)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_flag("--csv", options->csv, "with --scan: one CSV row per p on stdout");
     command->add_option("--certificate", options->certificate,

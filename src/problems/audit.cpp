@@ -165,12 +165,25 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
                                 mid_double(start.branches[index].unknowns[1].value)};
         }
     }
+    std::vector<long> counts;
+    for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
+        const Rational share = (ends[k + 1] - ends[k]) / total * settings.initial_pieces;
+        counts.push_back(std::max(1L, static_cast<long>(share.get_d())));
+    }
+    // Pieces audited or still to be audited: a bisection adds one.
+    std::size_t planned = 0;
+    for (long count : counts) planned += static_cast<std::size_t>(count);
+    if (planned > settings.max_pieces)
+        throw InputError("the audit would start with " + std::to_string(planned) + " pieces, more than the limit " +
+                         std::to_string(settings.max_pieces));
     std::function<void(const Rational&, const Rational&, int)> audit = [&](const Rational& lo, const Rational& hi,
                                                                            int depth) {
         AuditPiece piece = audit_piece(family, lo, hi, tracker ? &*tracker : nullptr);
         piece.detail["lattice"] = branch == AuditBranch::published ? "published" : "second root of Eq. (12)";
         const bool settled = piece.outcome == "packing" || piece.outcome == "overlapping" || piece.outcome == "no_lattice";
-        if (!settled && depth < settings.max_depth) {
+        const bool budget = planned < settings.max_pieces;
+        if (!settled && depth < settings.max_depth && budget) {
+            ++planned;
             Rational middle = (lo + hi) / 2;
             middle.canonicalize();
             audit(lo, middle, depth + 1);
@@ -178,7 +191,8 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
             return;
         }
         if (!settled) {
-            piece.reason += " (subdivision floor reached)";
+            piece.reason += budget ? " (subdivision floor reached)"
+                                   : " (piece limit " + std::to_string(settings.max_pieces) + " reached)";
             // A refutation at one exact p of the piece is still certified: try the midpoint.
             Rational middle = (lo + hi) / 2;
             middle.canonicalize();
@@ -197,8 +211,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
         result.pieces.push_back(std::move(piece));
     };
     for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
-        const Rational share = (ends[k + 1] - ends[k]) / total * settings.initial_pieces;
-        const long count = std::max(1L, static_cast<long>(share.get_d()));
+        const long count = counts[k];
         for (long i = 0; i < count; ++i) {
             Rational lo = ends[k] + (ends[k + 1] - ends[k]) * i / count, hi = ends[k] + (ends[k + 1] - ends[k]) * (i + 1) / count;
             lo.canonicalize();

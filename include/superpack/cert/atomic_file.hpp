@@ -1,11 +1,32 @@
-// Writing result files so that a reader never sees half of one: write a temporary file
-// beside the target, flush it, then rename over the target (atomic on POSIX).
+// Writing result files so that a reader never sees half of one, and so that a planted name
+// cannot redirect the write: the content goes to a temporary file created exclusively
+// (O_CREAT | O_EXCL | O_NOFOLLOW, a random suffix) in the target's own directory, is fsynced,
+// renamed over the target, and the directory is fsynced.
 #pragma once
+#include <stdexcept>
 #include <string>
 
 namespace superpack {
 
-// Creates missing parent directories. Throws std::runtime_error naming the path on failure.
+// A path superpack refuses to write, or a write that failed; the message names the path.
+// The CLI maps it to exit code 2.
+struct FileError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Throws FileError unless `path` can be a result file: its directory exists (missing
+// directories are never created here), and the name is new or a regular file (lstat: a
+// symbolic link, device, FIFO, socket or directory at the name is refused). Commands call it
+// before a long computation so that a bad path fails at once.
+void require_writable_target(const std::string& path);
+
+// The temporaries are named "<name>.superpack-partial-<pid>-XXXXXX". A writer killed before
+// its rename leaves one behind; the next write to the same target removes those of processes
+// that no longer run (regular files only, never following a link).
 void write_atomically(const std::string& path, const std::string& content);
+
+// Creates the one directory `path` if it is missing (its parent must exist): for the default
+// out/ of report and audit only; a directory the user names must exist.
+void create_default_directory(const std::string& path);
 
 }  // namespace superpack

@@ -45,6 +45,9 @@ AuditRange claimed_audit_range(Family family);
 struct AuditSettings {
     int initial_pieces = 16;
     int max_depth = 12;  // a piece is bisected at most this often when undecided
+    // No piece is bisected once the audit would hold more pieces than this: the time and the
+    // size of out/audit-<F>.json (up to about 12 kB a piece, as for O1) stay bounded.
+    std::size_t max_pieces = 5000;
 };
 
 AuditSettings default_audit_settings(Family family);
