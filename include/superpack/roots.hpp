@@ -49,12 +49,14 @@ NewtonResult<I> newton_isolate(const F& f, const I& box, double target_width, in
         result.iterations = iteration;
         const Jet<I> jet = f(variable(current));
         if (iteration == 1) result.derivative = jet.derivative;
-        if (contains_zero(jet.derivative)) {
+        // An unbounded derivative (a power below 1 at 0) bounds no step: undecided.
+        const bool unbounded = !bounded(jet.derivative);
+        if (unbounded || contains_zero(jet.derivative)) {
             if (!contains_zero(jet.value)) {
                 result.status = RootStatus::none;
                 result.reason = "f has one sign on the box";
             } else if (!result.existence) {
-                result.reason = "derivative may vanish on the box";
+                result.reason = unbounded ? "derivative unbounded on the box" : "derivative may vanish on the box";
             }
             return result;
         }
@@ -125,6 +127,13 @@ KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double
             const std::vector<Jet<I>> column = f(seeded);
             for (std::size_t i = 0; i < n; ++i) jacobian[i][j] = column[i].derivative;
         }
+        // An unbounded entry (a power below 1 at 0) bounds no contraction: undecided.
+        for (const std::vector<I>& row : jacobian)
+            for (const I& entry : row)
+                if (!bounded(entry)) {
+                    if (!result.existence) result.reason = "Jacobian unbounded on the box";
+                    return result;
+                }
         Eigen::MatrixXd middle(n, n);
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) middle(i, j) = mid_double(jacobian[i][j]);
