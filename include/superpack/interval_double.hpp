@@ -29,7 +29,7 @@ inline double next_down(double x) { return -next_up(-x); }
 // change of the rounding mode (MXCSR writes were a fifth of the time of a density; the
 // start-up self-test checks that the mode is round-to-nearest). NOTES.md section 1.1 proves
 // when the error found by TwoSum or one fused multiply-add has the right sign: for a sum unless
-// an operation overflows, for a product when |x y| >= 2^-968, for a quotient when
+// an operation overflows, for a product p when |p| >= 2^-968, for a quotient when
 // |x| >= 2^-968 and x / y rounds to a normal number, for a square root when x >= 2^-968.
 // Outside those ranges (tiny operands or results, overflow, infinite operands) the `*_edge`
 // functions find the sign from the operands scaled to [1/2, 1), which is slower and rare.

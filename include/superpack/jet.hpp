@@ -82,8 +82,10 @@ template <class I> Jet<I> pow_nonneg(const Jet<I>& x, const I& y) {
     const I value = pow_nonneg(x.value, y);
     if (narrow_positive(x.value)) return {value, y * (value / x.value) * x.derivative};
     const I exponent = y - field_of(y).integer(1);
-    const bool zero_point = !certainly_positive(upper_point(x.value));
-    const I kernel = zero_point && !certainly_nonnegative(exponent) ? unbounded_above(x.value) : pow_nonneg(x.value, exponent);
+    // At the point 0 with y < 1 the slope is +inf, and pow_nonneg refuses 0^(y-1).
+    const bool at_zero = !certainly_positive(upper_point(x.value));
+    const I kernel = at_zero && !certainly_nonnegative(exponent) ? unbounded_above(x.value)
+                                                                 : pow_nonneg(x.value, exponent);
     return {value, y * kernel * x.derivative};
 }
 // x^y with both varying, x > 0: exp(y log x).
