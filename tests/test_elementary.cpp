@@ -1,14 +1,19 @@
 // The binary64 backend's own arithmetic: directed + - * / sqrt made from round-to-nearest
 // results (interval_double.hpp) and exp, log, Gamma from series with proved error bounds
-// (src/elementary_double.cpp). Every enclosure is checked against MPFR at 256 bits with
-// directed rounding, an independent and correctly rounded reference, on random and on
+// (src/elementary_double.cpp). Every enclosure of exp, log and Gamma is checked against MPFR
+// at 256 bits with directed rounding, an independent and correctly rounded reference, and
+// every directed + - * / sqrt against the exact rational value (GMP), on random and on
 // hand-picked hard arguments; and the enclosures must stay tight, so a loose bound fails.
 #include <gmpxx.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "support.hpp"
@@ -132,38 +137,167 @@ TEST_CASE("Gamma at the edges of the series' range: widest narrow arguments and 
     }
 }
 
-TEST_CASE("directed + - * / sqrt are the exact roundings down and up") {
+// ---- directed + - * / sqrt over the whole binary64 range ------------------------------------
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A random double of the binade [2^e, 2^(e+1)), -1074 <= e <= 1023, with `bits` significant
+// bits (53: any; fewer: results that are often exact). Below 2^-1022 the subnormals of the
+// binade (ldexp rounds to their grid).
+double in_binade(std::mt19937_64& random, int e, int bits = 53) {
+    const std::uint64_t mantissa = (std::uint64_t(1) << 52) | ((random() >> 12) & ~((std::uint64_t(1) << (53 - bits)) - 1));
+    const double x = std::ldexp(static_cast<double>(mantissa), e - 52);
+    return random() % 2 ? -x : x;
+}
+
+// Failures of one operation: the exact value outside [down, up], or down and up neither one
+// double (an exact result) nor neighbours.
+struct Tally {
+    long checked = 0, enclosure = 0, tightness = 0;
+    std::string first;
+};
+
+// down <= exact <= up, where -inf and +inf stand for every value beyond -+DBL_MAX.
+bool at_most(double bound, const mpq_class& exact) { return bound == -kInfinity || (std::isfinite(bound) && mpq_class(bound) <= exact); }
+bool at_least(double bound, const mpq_class& exact) { return bound == kInfinity || (std::isfinite(bound) && exact <= mpq_class(bound)); }
+bool equals(double bound, const mpq_class& exact) { return std::isfinite(bound) && mpq_class(bound) == exact; }
+
+void note(Tally& tally, bool enclosed, bool tight, const char* operation, double x, double y, double down, double up) {
+    ++tally.checked;
+    if (!enclosed) ++tally.enclosure;
+    if (!tight) ++tally.tightness;
+    if ((!enclosed || !tight) && tally.first.empty()) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%s(%a, %a) gave [%a, %a]%s", operation, x, y, down, up,
+                      enclosed ? " (not tight)" : " (misses the exact value)");
+        tally.first = text;
+    }
+}
+
+void check_directed(Tally& tally, const char* operation, double x, double y, double down, double up, const mpq_class& exact) {
+    const bool enclosed = at_most(down, exact) && at_least(up, exact);
+    const bool tight = equals(down, exact) || equals(up, exact) ? down == up : detail::next_up(down) == up;
+    note(tally, enclosed, tight, operation, x, y, down, up);
+}
+
+void check_root(Tally& tally, double x, double down, double up) {
+    // sqrt(x) compared through squares: down <= sqrt(x) iff down <= 0 or down^2 <= x.
+    const mpq_class exact(x);
+    const bool lower = std::isfinite(down) && (down <= 0 || mpq_class(down) * mpq_class(down) <= exact);
+    const bool upper = up == kInfinity || (std::isfinite(up) && up >= 0 && exact <= mpq_class(up) * mpq_class(up));
+    const bool exact_root = std::isfinite(down) && down >= 0 && mpq_class(down) * mpq_class(down) == exact;
+    const bool tight = exact_root ? down == up : detail::next_up(down) == up;
+    note(tally, lower && upper, tight, "sqrt", x, 0, down, up);
+}
+
+struct Operands {
+    double x, y;
+};
+
+}  // namespace
+
+TEST_CASE("directed + - * / sqrt are the exact roundings down and up in every binade, subnormals and overflow included") {
     std::mt19937_64 random(3);
     detail::rounded_arith_outward rounding;
-    auto check = [&](double down, double up, const mpq_class& exact) {
-        REQUIRE(mpq_class(down) <= exact);
-        REQUIRE(exact <= mpq_class(up));
-        // Exact results stay points, others get the two neighbours; below 2^-960, where an
-        // error may underflow, a result is stepped outward on both sides (up to two ulps).
-        if (abs(exact) < mpq_class(std::ldexp(1.0, -960))) return;
-        if (mpq_class(down) == exact) REQUIRE(down == up);
-        else REQUIRE(detail::next_up(down) == up);
-    };
-    for (int k = 0; k < 20000; ++k) {
-        const int range = k % 3 == 0 ? 60 : 500;  // close exponents, where sums cancel, and far ones (no overflow)
-        double a = random_positive(random, -range, range), b = random_positive(random, -range, range);
-        if (k % 2) b = -b;
-        if (k % 7 == 0) b = -a * 3;  // exact results
-        check(rounding.add_down(a, b), rounding.add_up(a, b), mpq_class(a) + mpq_class(b));
-        check(rounding.sub_down(a, b), rounding.sub_up(a, b), mpq_class(a) - mpq_class(b));
-        check(rounding.mul_down(a, b), rounding.mul_up(a, b), mpq_class(a) * mpq_class(b));
-        check(rounding.div_down(a, b), rounding.div_up(a, b), mpq_class(a) / mpq_class(b));
-        const double root_down = rounding.sqrt_down(a), root_up = rounding.sqrt_up(a);
-        REQUIRE(mpq_class(root_down) * mpq_class(root_down) <= mpq_class(a));
-        REQUIRE(mpq_class(a) <= mpq_class(root_up) * mpq_class(root_up));
-        REQUIRE((root_down == root_up || detail::next_up(root_down) == root_up));
+    const double largest = std::numeric_limits<double>::max();
+    std::vector<Operands> products, quotients, sums;
+    std::vector<double> roots;
+    // Tiny operands whose FMA residual underflows, the overflow edge of TwoSum, then every
+    // result binade from below the subnormals (underflow to 0) to above DBL_MAX (overflow),
+    // 16 operand pairs each.
+    quotients.push_back({0x1p-1074, 3 * 0x1p-200});
+    roots.push_back(3 * 0x1p-1074);
+    sums.push_back({3 * 0x1p970, -largest});
+    sums.push_back({largest, 0x1p970});
+    sums.push_back({largest, largest});
+    sums.push_back({-largest, -0x1p971});
+    products.push_back({2.0, 0.5});
+    products.push_back({0x1p-600, 0x1p-600});
+    products.push_back({0x1p-1074, 0x1p-1074});
+    products.push_back({0x1p-1022, 0.75});
+    for (int result = -1080; result <= 1025; ++result) {
+        for (int k = 0; k < 16; ++k) {
+            const int bits = k % 4 == 0 ? 20 : 53;  // short mantissas: exact results
+            // x y in binade `result`: x from any binade that leaves room for y.
+            std::uniform_int_distribution<int> factor(std::max(-1074, result - 1023), std::min(1023, result + 1074));
+            const int ex = factor(random);
+            products.push_back({in_binade(random, ex, bits), in_binade(random, std::clamp(result - ex, -1074, 1023), bits)});
+            // x / y in binade `result`.
+            std::uniform_int_distribution<int> divisor(std::max(-1074, -1074 - result), std::min(1023, 1023 - result));
+            const int ey = divisor(random);
+            const double y = in_binade(random, ey, bits);
+            const double x = k % 4 == 0 ? y * in_binade(random, std::min(result, 1023), bits)
+                                        : in_binade(random, std::clamp(result + ey, -1074, 1023));
+            if (std::isfinite(x) && x != 0) quotients.push_back({x, y});
+            // x + y in binade `result` by cancellation of a larger x, or of operands in any binades.
+            if (result <= 1023) {
+                std::uniform_int_distribution<int> larger(std::max(result, -1074), 1023);
+                const double big = in_binade(random, larger(random), bits);
+                const double small = in_binade(random, std::max(result, -1074), bits);
+                if (std::isfinite(small - big)) sums.push_back({big, small - big});
+            }
+            std::uniform_int_distribution<int> any(-1074, 1023);
+            sums.push_back({in_binade(random, any(random), bits), in_binade(random, any(random), bits)});
+        }
     }
-    // Underflow: a product below the smallest subnormal is not zero.
-    CHECK(rounding.mul_up(0x1p-600, 0x1p-600) > 0);
-    CHECK(rounding.mul_down(0x1p-600, 0x1p-600) <= 0);
-    CHECK(rounding.mul_down(0x1p-600, 0x1p-600) >= -std::numeric_limits<double>::denorm_min());
+    // Sums at the overflow edge: both ends near DBL_MAX, a large end with a small one, and
+    // -DBL_MAX plus an odd multiple of 2^970 (half of them overflow inside TwoSum).
+    for (int k = 0; k < 2000; ++k) {
+        std::uniform_int_distribution<int> edge(1015, 1023);
+        sums.push_back({std::fabs(in_binade(random, 1023)), std::fabs(in_binade(random, edge(random)))});
+        sums.push_back({largest - k * 0x1p971, (k % 2 ? -1 : 1) * in_binade(random, edge(random) - 50, 53)});
+        sums.push_back({(2 * k + 1) * 0x1p970, -largest});
+    }
+    // Square roots of every binade, and exact squares.
+    for (int e = -1074; e <= 1023; ++e)
+        for (int k = 0; k < 16; ++k) {
+            roots.push_back(std::fabs(in_binade(random, e)));
+            if (k % 4 == 0 && e >= -1074 / 2 + 1 && e <= 511) {
+                const double r = std::fabs(in_binade(random, e, 26));
+                roots.push_back(r * r);
+            }
+        }
+    roots.push_back(largest);
+    roots.push_back(0x1p-1074);
+
+    Tally add, sub, mul, div, root;
+    for (const auto& [x, y] : sums) {
+        check_directed(add, "add", x, y, rounding.add_down(x, y), rounding.add_up(x, y), mpq_class(x) + mpq_class(y));
+        check_directed(sub, "sub", x, -y, rounding.sub_down(x, -y), rounding.sub_up(x, -y), mpq_class(x) - mpq_class(-y));
+    }
+    for (const auto& [x, y] : products)
+        check_directed(mul, "mul", x, y, rounding.mul_down(x, y), rounding.mul_up(x, y), mpq_class(x) * mpq_class(y));
+    for (const auto& [x, y] : quotients)
+        check_directed(div, "div", x, y, rounding.div_down(x, y), rounding.div_up(x, y), mpq_class(x) / mpq_class(y));
+    for (double x : roots) check_root(root, x, rounding.sqrt_down(x), rounding.sqrt_up(x));
+    for (const Tally* tally : {&add, &sub, &mul, &div, &root}) {
+        INFO(tally->checked << " checked; first failure: " << tally->first);
+        CHECK(tally->enclosure == 0);
+        CHECK(tally->tightness == 0);
+    }
+
+    // Exact results stay exact, which the lattice criterion at p = 1/2 needs.
+    CHECK(rounding.mul_down(2.0, 0.5) == 1);
+    CHECK(rounding.mul_up(2.0, 0.5) == 1);
     CHECK(rounding.mul_down(0.0, 5.0) == 0);
     CHECK(rounding.mul_up(0.0, 5.0) == 0);
     CHECK(rounding.add_down(0x1p-1074, -0x1p-1074) == 0);
-    CHECK(rounding.mul_down(2.0, 0.5) == 1);
+    CHECK(rounding.add_up(0x1p-1074, -0x1p-1074) == 0);
+    CHECK(rounding.div_down(0.0, 0x1p-1074) == 0);
+    CHECK(rounding.sqrt_up(0.0) == 0);
+    // A positive product that underflows is enclosed by [0, 2^-1074]: [0, b] * [0, c] >= 0.
+    CHECK(rounding.mul_down(0x1p-600, 0x1p-600) == 0);
+    CHECK(rounding.mul_up(0x1p-600, 0x1p-600) == std::numeric_limits<double>::denorm_min());
+    const DInterval tiny_product = DInterval(0.0, 0x1p-600) * DInterval(0.0, 0x1p-600);
+    CHECK(tiny_product.lower() == 0);
+    // Infinite ends (unbounded enclosures) are exact, and an undefined value gets the whole line.
+    CHECK(rounding.add_down(-kInfinity, 1.0) == -kInfinity);
+    CHECK(rounding.mul_up(kInfinity, 2.0) == kInfinity);
+    CHECK(rounding.div_down(1.0, kInfinity) == 0);
+    CHECK(rounding.sqrt_up(kInfinity) == kInfinity);
+    CHECK(rounding.add_down(kInfinity, -kInfinity) == -kInfinity);
+    CHECK(rounding.add_up(kInfinity, -kInfinity) == kInfinity);
+    CHECK(rounding.div_up(1.0, 0.0) == kInfinity);
 }

@@ -198,7 +198,8 @@ int run(const SuperdiskCliOptions& options) {
         }
         // p < 1/2 (not applicable): the lattices and the optimum are printed as undecided.
         if (report.status != OptimumStatus::certified)
-            throw Failure(exit_undecided, "superdisk: undecided: " + report.message);
+            throw Failure(exit_undecided, "superdisk: undecided: " + report.message +
+                                              (options.digits.empty() && report.status == OptimumStatus::undecided ? "; try --digits 30" : ""));
         return exit_ok;
     });
 }

@@ -9,8 +9,8 @@
 #include <mpfr.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
-
 #include <string>
 
 #include "superpack/arith/ball.hpp"
@@ -116,15 +116,28 @@ inline double log(double x) { return std::log(x); }
 inline double pow_nonneg(double x, double y) { return std::pow(x, y); }
 inline double pow_abs(double x, double y) { return std::pow(std::fabs(x), y); }
 inline double pow_signed(double x, double y) { return std::copysign(std::pow(std::fabs(x), y), x); }
+inline double unbounded_above(double) { return std::numeric_limits<double>::infinity(); }
 
-// x^y for x >= 0 as exp(y log x), evaluated at the endpoints of x: for a fixed y the map
-// x -> x^y is monotone, so the hull of the two endpoint enclosures holds every value.
-// At x = 0 the lower value is 0 when y > 0 and 1 when y = 0 exactly (the limit used by
-// derivatives at p = 1/2); a possibly non-positive y with x touching 0 is a contract error.
 // x^y for a positive x, as one ball evaluation of exp(y log x) (Arb): tight when x is narrow,
 // and one library call instead of four, which is most of a density's cost.
 DInterval power_of_positive(const DInterval& x, const DInterval& y);
 Ball power_of_positive(const Ball& x, const Ball& y);
+
+// Unbounded enclosures. [lower, +inf]: a DInterval holds it exactly; a Ball has no one-sided
+// infinite form and becomes the whole line [0 +- inf]. The whole line is (-inf, inf) in both.
+inline DInterval unbounded_above(const DInterval& lower) {
+    return DInterval(lower.lower(), std::numeric_limits<double>::infinity());
+}
+inline Ball unbounded_above(const Ball& lower) {
+    Ball result(lower.precision());
+    arb_zero_pm_inf(result.get());
+    return result;
+}
+inline DInterval whole_line(const DInterval&) { return DInterval::whole(); }
+inline Ball whole_line(const Ball& like) { return unbounded_above(like); }
+// Both ends finite. An unbounded enclosure bounds no slope or step (roots.hpp).
+inline bool bounded(const DInterval& x) { return std::isfinite(x.lower()) && std::isfinite(x.upper()); }
+inline bool bounded(const Ball& x) { return arb_is_finite(x.get()); }
 
 // Positive and narrower than 2^-16 of its size: where one ball evaluation is as tight as the
 // endpoint hull (the fast paths of the powers below and in jet.hpp).
@@ -134,37 +147,57 @@ bool narrow_positive(const I& x) {
 }
 
 template <class I>
+bool is_zero_point(const I& x) {
+    return contains_zero(x) && width_upper(x) == 0.0;
+}
+
+// x^y for a base x >= 0 and any exponent y: encloses x^y for every point of x and of y, with
+// 0^y = 0 for y > 0 and 0^0 = 1 (the limit needed by derivatives at p = 1/2).
+// Contract (enforced): a base that may be negative is refused, and so is the base 0 (a
+// point) with an exponent that may be negative, where 0^y is no real number. A base [0, b]
+// reaching 0 with an exponent that may be < 0 has an unbounded range, since x^y -> +inf as
+// x -> 0 for y < 0, and gets the true, unbounded enclosure (see unbounded_above):
+//   y > 0: [0, b^y];  y = 0 exactly: 1;  0 <= y (y not a point): [0, max(1, b^y)];
+//   y < 0: [b^y, +inf];  y <= 0 (not a point): [min(1, b^y), +inf];  y straddling 0: [0, +inf].
+// On a base away from 0, x -> x^y is monotone for each y, so the hull of exp(y log x) at the
+// two ends of x holds every value.
+template <class I>
 I pow_nonneg(const I& x, const I& y) {
     const auto field = field_of(x);
     if (!certainly_nonnegative(x)) throw std::domain_error("pow_nonneg: base may be negative");
     if (narrow_positive(x)) return power_of_positive(x, y);
-    const I a = lower_point(x), b = upper_point(x);
-    auto endpoint = [&](const I& base) -> I {
-        if (certainly_positive(base)) return exp(y * log(base));
-        if (certainly_positive(y)) return field.integer(0);
-        if (!contains_zero(y) || width_upper(y) != 0.0)
-            throw std::domain_error("pow_nonneg: 0^y with y possibly <= 0");
-        return field.integer(1);
-    };
-    if (!certainly_positive(b)) return endpoint(b);  // x is the point 0
-    const I high = endpoint(b);
-    if (certainly_positive(a)) return hull(endpoint(a), high);
-    // a = 0: x^y ranges down to 0 (y > 0) or is 1 at y = 0; both lie in hull(0 or 1, b^y).
-    const I low = certainly_positive(y) ? field.integer(0) : hull(field.integer(0), field.integer(1));
-    return hull(low, high);
+    if (is_zero_point(y)) return field.integer(1);
+    const I b = upper_point(x);
+    if (certainly_positive(x)) return hull(exp(y * log(lower_point(x))), exp(y * log(b)));
+    const I zero = field.integer(0), one = field.integer(1);
+    const bool nonnegative = certainly_nonnegative(y), nonpositive = certainly_nonnegative(-y);
+    if (!certainly_positive(b)) {  // x is the point 0
+        if (certainly_positive(y)) return zero;
+        if (nonnegative) return hull(zero, one);
+        throw std::domain_error("pow_nonneg: 0^y with y possibly < 0");
+    }
+    const I high = exp(y * log(b));  // b^y for every y
+    if (certainly_positive(y)) return hull(zero, high);
+    if (nonnegative) return hull(hull(zero, one), high);
+    if (certainly_negative(y)) return unbounded_above(high);
+    if (nonpositive) return unbounded_above(hull(one, high));
+    return unbounded_above(zero);
 }
 
-// |x|^y for any real x.
+// |x|^y for any real x (the contract of pow_nonneg on |x|).
 template <class I>
 I pow_abs(const I& x, const I& y) {
     return pow_nonneg(abs(x), y);
 }
 
-// sign(x) |x|^y, the derivative kernel of |x|^(y+1); [-M, M] when x straddles 0.
+// sign(x) |x|^y, the derivative kernel of |x|^(y+1). Where x reaches 0 the values lie in
+// [-M, M], M = max |x|^y, if y >= 0 (for y = 0 exactly that is sign(x) in [-1, 1]); if y may
+// be < 0, |x|^y is unbounded near 0 and the result is the whole line.
 template <class I>
 I pow_signed(const I& x, const I& y) {
     if (certainly_positive(x)) return pow_nonneg(x, y);
     if (certainly_negative(x)) return -pow_nonneg(-x, y);
+    if (!certainly_nonnegative(y)) return whole_line(x);
     const I magnitude = upper_point(pow_abs(x, y));
     return hull(-magnitude, magnitude);
 }

@@ -61,7 +61,13 @@ template <class I> Jet<I> gamma(const Jet<I>& a) {
     return {value, value * digamma(a.value) * a.derivative};
 }
 
-// |x|^y with a constant exponent y: d/dx = y sign(x) |x|^(y-1).
+// |x|^y with a constant exponent y: d/dx = y sign(x) |x|^(y-1). A Jet's derivative must
+// bound every slope (f(b) - f(a)) / (b - a) over the box, which is what Newton and Krawczyk
+// use. Where x reaches 0 (pow_signed gives the kernel sign(x) |x|^(y-1)):
+//   y > 1: the derivative is continuous, bounded, and 0 at x = 0;
+//   y = 1 exactly (p = 1/2): |x| has no derivative at 0, but [-1, 1] still bounds every slope,
+//     because | |b| - |a| | <= |b - a| (|x| is 1-Lipschitz); the lattice criterion relies on it;
+//   y < 1: |x|^y has no finite bound on its slopes near 0, so the derivative is the whole line.
 // For a narrow x certainly away from 0, |x|^(y-1) = |x|^y / |x| saves the second power, the
 // dearest operation in Newton's inner loop. (On a wide x the quotient would overestimate.)
 template <class I> Jet<I> pow_abs(const Jet<I>& x, const I& y) {
@@ -70,11 +76,17 @@ template <class I> Jet<I> pow_abs(const Jet<I>& x, const I& y) {
     const I one = field_of(y).integer(1);
     return {value, y * pow_signed(x.value, y - one) * x.derivative};
 }
+// x^y for x >= 0 with a constant exponent: d/dx = y x^(y-1), unbounded near 0 for y < 1
+// (pow_nonneg encloses it as [b^(y-1), +inf] on [0, b]; at the point 0 it is +inf).
 template <class I> Jet<I> pow_nonneg(const Jet<I>& x, const I& y) {
     const I value = pow_nonneg(x.value, y);
     if (narrow_positive(x.value)) return {value, y * (value / x.value) * x.derivative};
-    const I one = field_of(y).integer(1);
-    return {value, y * pow_nonneg(x.value, y - one) * x.derivative};
+    const I exponent = y - field_of(y).integer(1);
+    // At the point 0 with y < 1 the slope is +inf, and pow_nonneg refuses 0^(y-1).
+    const bool at_zero = !certainly_positive(upper_point(x.value));
+    const I kernel = at_zero && !certainly_nonnegative(exponent) ? unbounded_above(x.value)
+                                                                 : pow_nonneg(x.value, exponent);
+    return {value, y * kernel * x.derivative};
 }
 // x^y with both varying, x > 0: exp(y log x).
 template <class I> Jet<I> pow_nonneg(const Jet<I>& x, const Jet<I>& y) { return exp(y * log(x)); }

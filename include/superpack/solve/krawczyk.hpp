@@ -53,6 +53,13 @@ KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double
             const std::vector<Jet<I>> column = f(seeded);
             for (std::size_t i = 0; i < n; ++i) jacobian[i][j] = column[i].derivative;
         }
+        // An unbounded entry (a power below 1 at 0) bounds no contraction: undecided.
+        for (const std::vector<I>& row : jacobian)
+            for (const I& entry : row)
+                if (!bounded(entry)) {
+                    if (!result.existence) result.reason = "Jacobian unbounded on the box";
+                    return result;
+                }
         DoubleMatrix middle(n);
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) middle(i, j) = mid_double(jacobian[i][j]);

@@ -30,12 +30,14 @@ NewtonResult<I> newton_isolate(const F& f, const I& box, double target_width, in
         result.iterations = iteration;
         const Jet<I> jet = f(variable(current));
         if (iteration == 1) result.derivative = jet.derivative;
-        if (contains_zero(jet.derivative)) {
+        // An unbounded derivative (a power below 1 at 0) bounds no step: undecided.
+        const bool unbounded = !bounded(jet.derivative);
+        if (unbounded || contains_zero(jet.derivative)) {
             if (!contains_zero(jet.value)) {
                 result.status = RootStatus::none;
                 result.reason = "f has one sign on the box";
             } else if (!result.existence) {
-                result.reason = "derivative may vanish on the box";
+                result.reason = unbounded ? "derivative unbounded on the box" : "derivative may vanish on the box";
             }
             return result;
         }
