@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "superpack/arith/arb_access.hpp"
 #include "superpack/problems/families.hpp"
 
 namespace superpack::test {
@@ -32,7 +33,7 @@ inline const nlohmann::json& golden() {
 inline Ball reference(const std::string& decimal) {
     Ball result(256);
     const std::string text = decimal + " +/- 1e-48";
-    REQUIRE(arb_set_str(result.get(), text.c_str(), 256) == 0);
+    REQUIRE(arb_set_str(arb_of(result), text.c_str(), 256) == 0);
     return result;
 }
 

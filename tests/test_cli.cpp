@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "support.hpp"
+#include "superpack/arith/arb_access.hpp"
 
 namespace {
 
@@ -34,8 +35,8 @@ Run run(const std::string& arguments, const std::string& directory = "") {
 double width_of(const nlohmann::json& enclosure) {
     // Decimal strings with up to hundreds of digits: compare via a 600-digit parse.
     superpack::Ball lo(2100), hi(2100);
-    arb_set_str(lo.get(), enclosure["lo"].get<std::string>().c_str(), 2100);
-    arb_set_str(hi.get(), enclosure["hi"].get<std::string>().c_str(), 2100);
+    arb_set_str(arb_of(lo), enclosure["lo"].get<std::string>().c_str(), 2100);
+    arb_set_str(arb_of(hi), enclosure["hi"].get<std::string>().c_str(), 2100);
     return superpack::mid_double(hi - lo);
 }
 

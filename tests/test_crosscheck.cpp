@@ -8,6 +8,7 @@
 
 #include "checker/equations.hpp"
 #include "support.hpp"
+#include "superpack/arith/mpfr_bounds.hpp"
 
 namespace {
 

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "superpack/arith/mpfr_bounds.hpp"
 #include "superpack/solve/krawczyk.hpp"
 #include "superpack/solve/newton.hpp"
 #include "support.hpp"

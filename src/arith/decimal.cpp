@@ -1,4 +1,5 @@
 #include "superpack/arith/decimal.hpp"
+#include "superpack/arith/mpfr_bounds.hpp"
 
 #include <cmath>
 #include <cstdlib>

@@ -10,6 +10,7 @@
 #include <limits>
 #include <tuple>
 
+#include "superpack/arith/arb_access.hpp"
 #include "superpack/arith/interval.hpp"
 
 namespace superpack::detail {
@@ -48,7 +49,7 @@ struct Tables {
 
 constexpr slong kTableBits = 128;
 
-DInterval to_double(const Ball& x) { return from_arb(x.get()); }
+DInterval to_double(const Ball& x) { return from_arb(arb_of(x)); }
 
 double nearest(const Rational& q) {
     mpfr_t x;
@@ -88,12 +89,12 @@ const Tables& tables() {
         for (int i = 0; i < kGammaCentres; ++i) {
             // log Gamma(c + h) as a power series in h, coefficient k = (log Gamma)^(k)(c) / k!.
             const Ball centre = b.rational(Rational(1) + Rational(2 * i + 1, 2 * kGammaCentres));
-            arb_poly_set_coeff_arb(shifted, 0, centre.get());
+            arb_poly_set_coeff_arb(shifted, 0, arb_of(centre));
             arb_poly_set_coeff_si(shifted, 1, 1);
             arb_poly_lgamma_series(series, shifted, kGammaDegree + 1, kTableBits);
             for (int k = 0; k <= kGammaDegree; ++k) {
                 Ball coefficient = b.integer(0);
-                arb_poly_get_coeff_arb(coefficient.get(), series, k);
+                arb_poly_get_coeff_arb(arb_of(coefficient), series, k);
                 t.log_gamma_taylor[i][k] = to_double(coefficient);
             }
         }

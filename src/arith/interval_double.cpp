@@ -5,6 +5,7 @@
 #include "arith/arb_support.hpp"
 #include "arith/elementary_double.hpp"
 #include "superpack/arith/interval.hpp"
+#include "superpack/arith/mpfr_bounds.hpp"
 
 namespace superpack {
 

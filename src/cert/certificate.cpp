@@ -1,8 +1,10 @@
+#include "superpack/arith/mpfr_bounds.hpp"
 #include "superpack/cert/certificate.hpp"
 
 #include <stdexcept>
 
 #include "superpack/cert/atomic_file.hpp"
+#include "superpack/cert/dyadic_text.hpp"
 #include "superpack/arith/decimal.hpp"
 #include "superpack/arith/self_test.hpp"
 

@@ -1,3 +1,4 @@
+#include "superpack/arith/mpfr_bounds.hpp"
 #include "superpack/problems/crossover.hpp"
 
 #include <algorithm>

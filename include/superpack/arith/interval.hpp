@@ -6,7 +6,6 @@
 // Predicates follow the Arb/IBEX convention: certainly_* holds for every point of the
 // enclosure (false when unsure); possibly_* / contains_* hold for at least one point.
 #pragma once
-#include <mpfr.h>
 
 #include <cmath>
 #include <limits>
@@ -32,7 +31,7 @@ struct DoubleField {
 
 struct BallField {
     using Interval = Ball;
-    slong precision;
+    long precision;
     long bits() const { return precision; }
     const char* backend() const { return "arb-ball (Arb 2.23, MPFR-free midpoint-radius)"; }
     Ball rational(const Rational& q) const;
@@ -99,10 +98,6 @@ double width_upper(const Ball& x);
 DInterval from_doubles(const DInterval& like, double lo, double hi);
 Ball from_doubles(const Ball& like, double lo, double hi);
 
-// Endpoints as MPFR numbers, rounded outward to the precision of lo and hi.
-void get_bounds(mpfr_t lo, mpfr_t hi, const DInterval& x);
-void get_bounds(mpfr_t lo, mpfr_t hi, const Ball& x);
-
 // ---- plain doubles, for guesses only --------------------------------------------------
 // The generic formulas can be instantiated with double to find starting boxes quickly.
 // Nothing computed with these is reported or used as a verdict: every guess is re-verified
@@ -128,16 +123,15 @@ Ball power_of_positive(const Ball& x, const Ball& y);
 inline DInterval unbounded_above(const DInterval& lower) {
     return DInterval(lower.lower(), std::numeric_limits<double>::infinity());
 }
-inline Ball unbounded_above(const Ball& lower) {
-    Ball result(lower.precision());
-    arb_zero_pm_inf(result.get());
-    return result;
-}
+Ball unbounded_above(const Ball& lower);
 inline DInterval whole_line(const DInterval&) { return DInterval::whole(); }
 inline Ball whole_line(const Ball& like) { return unbounded_above(like); }
 // Both ends finite. An unbounded enclosure bounds no slope or step (roots.hpp).
 inline bool bounded(const DInterval& x) { return std::isfinite(x.lower()) && std::isfinite(x.upper()); }
-inline bool bounded(const Ball& x) { return arb_is_finite(x.get()); }
+bool bounded(const Ball& x);
+// The same interval, bit for bit (a replayed partition must reproduce its pieces).
+inline bool same_interval(const DInterval& a, const DInterval& b) { return a.lower() == b.lower() && a.upper() == b.upper(); }
+bool same_interval(const Ball& a, const Ball& b);
 
 // Positive and narrower than 2^-16 of its size: where one ball evaluation is as tight as the
 // endpoint hull (the fast paths of the powers below and in jet.hpp).

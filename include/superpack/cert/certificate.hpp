@@ -19,9 +19,6 @@ constexpr int certificate_format_version = 1;
 Json exact_interval_json(const DInterval& x);
 Json exact_interval_json(const Ball& x);
 
-// "m*2^e" for an MPFR number, exactly.
-std::string dyadic_text(const mpfr_t x);
-
 // The self-describing head of every certificate: format, format_version, tool, version,
 // commit, command, backend, bits, digits, and the rounding self-test result.
 // Throws std::runtime_error when the rounding self-test fails (no certificate without it).

@@ -1,4 +1,4 @@
-// Proof trees for branch-and-bound results: the partition behind isolate_roots (roots.hpp)
+// Proof trees for branch-and-bound results: the partition behind isolate_roots (solve/root_partition.hpp)
 // as a certificate tree of {"kind": "split", "box", "dimension", "cases": [a, b]} nodes with
 // "excluded" and "krawczyk" leaves (NOTES.md section 8). Any claim kind whose proof is a
 // root search uses partition_json; the checker walks it with check_partition (checker/replay.hpp).
@@ -11,13 +11,6 @@
 #include "superpack/solve/root_partition.hpp"
 
 namespace superpack {
-
-namespace certificate_detail {
-
-inline bool same_interval(const DInterval& a, const DInterval& b) { return a.lower() == b.lower() && a.upper() == b.upper(); }
-inline bool same_interval(const Ball& a, const Ball& b) { return arb_equal(a.get(), b.get()) != 0; }
-
-}  // namespace certificate_detail
 
 // A JSON array of exact intervals.
 template <class I>
