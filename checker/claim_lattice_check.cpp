@@ -2,15 +2,19 @@
 // the lattice with an exact basis is a packing of the superball at an exact p >= 1/2 with N
 // contacts, or is not a packing (a witness of 2p-norm < 2). NOTES.md sections 5 and 8.
 //
-// The checker trusts no list in the file. It recomputes the coefficient bound exactly in
-// rationals (Cramer and Hoelder: |a_i| <= floor(2 ||e_j x e_k||_1 / |det|)), enumerates every
+// The checker trusts no list in the file. It checks the basis reduction R = U B exactly (U
+// integral, det U = +-1), recomputes the coefficient bound of R exactly in rationals (Cramer
+// and Hoelder: |a_i| <= floor(2 ||r_j x r_k||_1 / |det R|)), enumerates every
 // triple of that box itself, and for each one whose exact coordinates are all at most 2 in size
 // (a larger coordinate already gives norm > 2) requires it to be listed, recomputes its norm
 // enclosure in MPFI, and decides it: certainly > 2, certainly < 2, or norm exactly 2 by an
 // exact rational test. Anything else is a rejection.
 #include <map>
 #include <set>
+#include <stdexcept>
 
+#include "checker/equations.hpp"
+#include "checker/equations_lattice.hpp"
 #include "checker/replay.hpp"
 #include "checker/triple.hpp"
 
@@ -18,8 +22,11 @@ namespace superpack_checker {
 
 namespace {
 
-using Vector = std::array<mpq_class, 3>;
-using Matrix = std::array<Vector, 3>;
+using Vector = RationalVector;
+using Matrix = RationalMatrix;
+
+// Triples in the coefficient box, prod (2 N_i + 1): the enumeration's limit (the producer's too).
+constexpr long kBoxLimit = 20000000;
 
 Matrix read_basis(Context& context, const Json& node, const std::string& path) {
     if (!node.is_array() || node.size() != 3) context.malformed(path, "expected three rows");
@@ -48,39 +55,52 @@ Vector combination(const Matrix& basis, const Triple& t) {
     return v;
 }
 
-mpq_class power(const mpq_class& x, long k) {
-    mpq_class result = 1;
-    for (long i = 0; i < k; ++i) result *= x;
-    return result;
+// The basis reduction (NOTES.md 5.6): proof.reduction = {transform U, reduced_basis R}, U with
+// integer entries and det U = +-1 and R = U B exactly, so that R spans the lattice of B and the
+// enumeration may run on R; a vector with coefficients t in R has coefficients t U in B. A file
+// without the key enumerates B itself (U = identity).
+struct Reduction {
+    Matrix reduced;
+    IntegerMatrix transform;
+    Triple given(const Triple& t) const {
+        Triple result{0, 0, 0};
+        for (int j = 0; j < 3; ++j) {
+            const mpz_class sum = t[0] * transform[0][j] + t[1] * transform[1][j] + t[2] * transform[2][j];
+            if (!sum.fits_slong_p()) throw std::domain_error("coefficients in the given basis beyond 64 bits");
+            result[j] = sum.get_si();
+        }
+        return result;
+    }
+};
+
+Reduction replay_reduction(Context& context, const Json& proof, const Matrix& basis) {
+    Reduction reduction{basis, {}};
+    for (int i = 0; i < 3; ++i) reduction.transform[i][i] = 1;
+    if (!proof.contains("reduction")) return reduction;
+    const std::string path = "proof.reduction";
+    const Json& node = proof["reduction"];
+    const Json& transform = context.member(node, "transform", path);
+    if (!transform.is_array() || transform.size() != 3) context.malformed(path + ".transform", "expected three rows");
+    for (int i = 0; i < 3; ++i) {
+        const std::string row = path + ".transform[" + std::to_string(i) + "]";
+        if (!transform[i].is_array() || transform[i].size() != 3) context.malformed(row, "expected three integers");
+        for (int j = 0; j < 3; ++j) {
+            if (!transform[i][j].is_number_integer()) context.malformed(row, "expected integers");
+            reduction.transform[i][j] = transform[i][j].get<long>();
+        }
+    }
+    context.current_step = path;
+    const mpz_class det = determinant(reduction.transform);
+    context.require(det == 1 || det == -1, path + ".transform",
+                    "det U = " + det.get_str() + ": not unimodular, so U B need not span the same lattice");
+    reduction.reduced = read_basis(context, context.member(node, "reduced_basis", path), path + ".reduced_basis");
+    context.require(reduction.reduced == product(reduction.transform, basis), path + ".reduced_basis",
+                    "the reduced basis is not U B");
+    return reduction;
 }
 
-// ||v||_(2p) = 2 decided exactly (NOTES.md 5.3): in rationals when 2p = m is an integer, else
-// when the k nonzero coordinates share one absolute value a, by (a/2)^m k^n = 1 (2p = m/n).
-// False when neither test applies.
-bool norm_is_exactly_two(const Vector& v, const mpq_class& two_p) {
-    const mpz_class& m = two_p.get_num();
-    const mpz_class& n = two_p.get_den();
-    if (!m.fits_slong_p() || m > 64 || !n.fits_slong_p() || n > 64) return false;
-    if (n == 1) {
-        mpq_class sum = 0;
-        for (const mpq_class& x : v) sum += power(abs(x), m.get_si());
-        return sum == power(mpq_class(2), m.get_si());
-    }
-    mpq_class a = 0;
-    long k = 0;
-    for (const mpq_class& x : v) {
-        if (x == 0) continue;
-        if (k > 0 && abs(x) != a) return false;
-        a = abs(x);
-        ++k;
-    }
-    return k > 0 && power(a / 2, m.get_si()) * power(mpq_class(k), n.get_si()) == 1;
-}
-
-Real norm_enclosure(const Vector& v, const Real& two_p, const Real& inverse_two_p, mpfr_prec_t precision) {
-    Real sum = integer(0, precision);
-    for (const mpq_class& x : v) sum = sum + pow_abs(rational(x, precision), two_p);
-    return pow_abs(sum, inverse_two_p);
+Real norm_enclosure(const Vector& v, const Real& two_p, mpfr_prec_t precision) {
+    return lattice_norm({rational(v[0], precision), rational(v[1], precision), rational(v[2], precision)}, two_p);
 }
 
 void check_lattice_check(const Json& claim, Context& context) {
@@ -101,9 +121,13 @@ void check_lattice_check(const Json& claim, Context& context) {
     const bool packing = packing_node.get<bool>();
     if (context.string_at(proof, "kind", "proof") != "enumeration") context.malformed("proof.kind", "expected \"enumeration\"");
 
-    // The coefficient bound, exactly: a_i = (e_j x e_k) . v / det and |(e_j x e_k) . v| <=
-    // ||e_j x e_k||_1 ||v||_inf <= ||e_j x e_k||_1 ||v||_(2p).
-    const mpq_class det = dot(basis[0], cross(basis[1], basis[2]));
+    // The enumeration runs on the reduced basis R = U B (rows r_i), the same lattice.
+    const Reduction reduction = replay_reduction(context, proof, basis);
+    const Matrix& rows = reduction.reduced;
+
+    // The coefficient bound, exactly: a_i = (r_j x r_k) . v / det and |(r_j x r_k) . v| <=
+    // ||r_j x r_k||_1 ||v||_inf <= ||r_j x r_k||_1 ||v||_(2p).
+    const mpq_class det = dot(rows[0], cross(rows[1], rows[2]));
     context.require(det != 0, "claim.data.basis", "the basis is singular");
     const Json& bound_data = context.member(proof, "bound_data", "proof");
     check_encloses(context, context.member(bound_data, "determinant", "proof.bound_data"), "proof.bound_data.determinant",
@@ -112,24 +136,23 @@ void check_lattice_check(const Json& claim, Context& context) {
     if (!cross_norms.is_array() || cross_norms.size() != 3) context.malformed("proof.bound_data.cross_norms", "expected three intervals");
     const Triple stated_bound = read_triple(context, context.member(proof, "coefficient_bound", "proof"), "proof.coefficient_bound");
     Triple bound;
-    long boxes = 1;  // triples in the checker's box (at most 2001^3: no overflow)
+    long boxes = 1;  // triples in the checker's box (the limit is checked before each product)
     for (int i = 0; i < 3; ++i) {
-        const Vector normal = cross(basis[(i + 1) % 3], basis[(i + 2) % 3]);
+        const Vector normal = cross(rows[(i + 1) % 3], rows[(i + 2) % 3]);
         const mpq_class l1 = abs(normal[0]) + abs(normal[1]) + abs(normal[2]);
         const std::string path = "proof.bound_data.cross_norms[" + std::to_string(i) + "]";
         check_encloses(context, cross_norms[i], path, rational(l1, precision));
         mpz_class n;
         const mpq_class limit = 2 * l1 / abs(det);
         mpz_fdiv_q(n.get_mpz_t(), limit.get_num_mpz_t(), limit.get_den_mpz_t());
-        context.require(n <= 1000, "proof.coefficient_bound", "the coefficient box is too large to enumerate");
+        context.require(n <= kBoxLimit && boxes * (2 * n + 1) <= kBoxLimit, "proof.coefficient_bound",
+                        "the coefficient box is too large to enumerate");
         bound[i] = n.get_si();
         boxes *= 2 * bound[i] + 1;
         context.require(stated_bound[i] >= bound[i], "proof.coefficient_bound",
                         "the stated bound " + std::to_string(stated_bound[i]) + " on coefficient " + std::to_string(i) +
                             " is below the checker's floor(2 ||e_j x e_k||_1 / |det|) = " + std::to_string(bound[i]));
     }
-
-    context.require(boxes <= 20000000, "proof.coefficient_bound", "the coefficient box is too large to enumerate");
 
     // The listed candidates, by triple.
     const Json& candidates = context.member(proof, "candidates", "proof");
@@ -145,14 +168,13 @@ void check_lattice_check(const Json& claim, Context& context) {
     const mpq_class two_p_exact = 2 * p;
     const Real two = integer(2, precision);
     const Real two_p = rational(two_p_exact, precision);
-    const Real inverse_two_p = rational(1 / two_p_exact, precision);
     std::set<Triple> contacts;
     long below = 0;
     for (long a = 0; a <= bound[0]; ++a)
         for (long b = (a == 0 ? 0 : -bound[1]); b <= bound[1]; ++b)
             for (long c = (a == 0 && b == 0 ? 1 : -bound[2]); c <= bound[2]; ++c) {
                 const Triple t{a, b, c};
-                const Vector v = combination(basis, t);
+                const Vector v = combination(rows, t);
                 if (abs(v[0]) > 2 || abs(v[1]) > 2 || abs(v[2]) > 2) continue;  // norm >= max |v_j| > 2
                 const auto found = listed.find(t);
                 context.require(found != listed.end(), "proof.candidates",
@@ -160,7 +182,7 @@ void check_lattice_check(const Json& claim, Context& context) {
                 const std::string path = "proof.candidates[" + std::to_string(found->second) + "]";
                 context.current_step = path;
                 const Json& entry = candidates[found->second];
-                const Real norm = norm_enclosure(v, two_p, inverse_two_p, precision);
+                const Real norm = norm_enclosure(v, two_p, precision);
                 check_encloses(context, context.member(entry, "norm", path), path + ".norm", norm);
                 std::string status;
                 if (less(norm, two)) {
@@ -193,13 +215,19 @@ void check_lattice_check(const Json& claim, Context& context) {
                         "the checker finds " + std::to_string(2 * contacts.size()) + " contacts");
         const Json& vectors = context.member(data, "contact_vectors", "claim.data");
         if (!vectors.is_array()) context.malformed("claim.data.contact_vectors", "expected an array");
-        std::set<Triple> stated;
+        // Stated in the given basis: the checker's contacts t (in R) are t U there.
+        std::set<Triple> stated, given;
         for (std::size_t k = 0; k < vectors.size(); ++k) {
             Triple t = read_triple(context, vectors[k], "claim.data.contact_vectors[" + std::to_string(k) + "]");
             if (!canonical(t)) t = {-t[0], -t[1], -t[2]};
             stated.insert(t);
         }
-        context.require(stated == contacts && vectors.size() == 2 * contacts.size(), "claim.data.contact_vectors",
+        for (const Triple& t : contacts) {
+            Triple u = reduction.given(t);
+            if (!canonical(u)) u = {-u[0], -u[1], -u[2]};
+            given.insert(u);
+        }
+        context.require(stated == given && vectors.size() == 2 * contacts.size(), "claim.data.contact_vectors",
                         "the stated contact vectors differ from the checker's");
         // The proof's list of decided contacts, each with its exact vector.
         const Json& decided = context.member(proof, "contacts", "proof");
@@ -208,7 +236,7 @@ void check_lattice_check(const Json& claim, Context& context) {
         for (std::size_t k = 0; k < decided.size(); ++k) {
             const std::string path = "proof.contacts[" + std::to_string(k) + "]";
             const Triple t = read_triple(context, context.member(decided[k], "coefficients", path), path + ".coefficients");
-            const Vector v = combination(basis, t);
+            const Vector v = combination(rows, t);
             const Json& vector = context.member(decided[k], "vector", path);
             if (!vector.is_array() || vector.size() != 3) context.malformed(path + ".vector", "expected three rationals");
             for (int j = 0; j < 3; ++j) {
@@ -225,7 +253,7 @@ void check_lattice_check(const Json& claim, Context& context) {
         const Triple t = read_triple(context, context.member(witness, "coefficients", "claim.data.witness"),
                                      "claim.data.witness.coefficients");
         context.require(t != Triple{0, 0, 0}, "claim.data.witness", "the zero vector is no witness");
-        const Real norm = norm_enclosure(combination(basis, t), two_p, inverse_two_p, precision);
+        const Real norm = norm_enclosure(combination(basis, t), two_p, precision);
         check_encloses(context, context.member(witness, "norm", "claim.data.witness"), "claim.data.witness.norm", norm);
         context.require(less(norm, two), "claim.data.witness", "the witness norm " + text(norm) + " is not certainly < 2");
     }

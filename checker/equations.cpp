@@ -11,17 +11,25 @@ Real root_of_inverse(long b, const Real& p) { return exp(-log(integer(b, p.preci
 
 Real CubicEquation::shift() const { return root_of_inverse(2, p); }
 
+// (s + t)^k for s > -t, k = 2p or 2p - 1, as exp(k log1p(s - (1 - t))) with 1 - t =
+// -expm1(-ln2/(2p)): s + t rounded near 1 would cost log2(2p) bits at large p (s ~ ln2/(2p)).
+Real CubicEquation::shifted_power(const Real& s, bool lowered) const {
+    const Real k = lowered ? two_p(p) - one_like(p) : two_p(p);
+    const Real deficit = -expm1(-log(integer(2, p.precision())) / two_p(p));
+    return exp(k * log1p(s - deficit));
+}
+
 Real CubicEquation::value(const Real& s) const {
     const Real e = two_p(p);
-    const Real sum = pow_abs(s + shift(), e);
+    const Real sum = shifted_power(s, false);
     if (c1) return sum + 2 * pow_abs(s, e) - one_like(p);
     return sum + pow_abs(s, e) + exp(-e * log(integer(2, p.precision()))) - one_like(p);
 }
 
-// d/ds |u|^(2p) = 2p sign(u) |u|^(2p-1).
+// d/ds |u|^(2p) = 2p sign(u) |u|^(2p-1), with u = s + t > 0 in the first term.
 Real CubicEquation::derivative(const Real& s) const {
     const Real e = two_p(p), e1 = two_p(p) - one_like(p);
-    const Real shifted = e * pow_signed(s + shift(), e1);
+    const Real shifted = e * shifted_power(s, true);
     return shifted + (c1 ? 2 : 1) * (e * pow_signed(s, e1));
 }
 
@@ -73,6 +81,12 @@ Matrix3 o1_basis(const Real& q, const Real& s, const Real& l) {
 Real determinant(const Matrix3& m) {
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+Real lattice_norm(const std::array<Real, 3>& v, const Real& two_p) {
+    const Real half = one_like(two_p) / integer(2, two_p.precision());
+    const Real sum = pow_abs(half * v[0], two_p) + pow_abs(half * v[1], two_p) + pow_abs(half * v[2], two_p);
+    return integer(2, two_p.precision()) * pow_abs(sum, one_like(two_p) / two_p);
 }
 
 Real superball_volume(const Real& p) {

@@ -19,6 +19,7 @@ struct CubicEquation {
     Real value(const Real& s) const;
     Real derivative(const Real& s) const;
     Real shift() const;  // t
+    Real shifted_power(const Real& s, bool lowered) const;  // (s + t)^(2p), or ^(2p - 1) if lowered; s > -t
 };
 
 // O1 (Eq. 12), unknowns (q, s), l = 3^(-1/(2p)):
@@ -38,6 +39,10 @@ Matrix3 o0_basis(const Real& c);
 Matrix3 o1_basis(const Real& q, const Real& s, const Real& l);
 
 Real determinant(const Matrix3& m);
+// ||v||_(2p) = 2 (sum |v_i / 2|^(2p))^(1/(2p)): the halves of the candidates' coordinates are
+// at most about 1, so their powers neither overflow MPFR's exponent range (2^(2p) would for
+// p > 5e8) nor, on a wide p interval, grow with 2p.
+Real lattice_norm(const std::array<Real, 3>& v, const Real& two_p);
 // V_sb(p) = (2 Gamma(1 + 1/(2p)))^3 / Gamma(1 + 3/(2p)).
 Real superball_volume(const Real& p);
 

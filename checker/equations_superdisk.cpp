@@ -51,6 +51,25 @@ Real SuperdiskEquations::derivative(const Real& a, const Real& b, const Real& t)
     return dx * b - dy * a - t * x * da + x * db;
 }
 
+Real SuperdiskEquations::axis_height() const {
+    const Real q = exponent(), one = one_like(p);
+    return pow_abs(one - exp(-(q * log(integer(2, p.precision())))), one / q);
+}
+
+Real SuperdiskEquations::a_priori_lower_bound(const Real& t) const {
+    const mpfr_prec_t precision = p.precision();
+    const Real q = exponent(), one = one_like(p), zero = integer(0, precision);
+    const Real x = boundary_x(t), y1 = axis_height();
+    // The upper bound of a >= 0: x/2, or x minus the root when (1 - 2^-q - (y1 - t x)^q) > 0.
+    Real bound = x / integer(2, precision);
+    const Real inside = one - exp(-(q * log(integer(2, precision)))) - pow_abs(y1 - t * x, q);
+    if (positive(inside)) {
+        const Real other = x - pow_abs(lower_point(inside), one / q);
+        if (mpfr_cmp(other.hi(), bound.hi()) < 0) bound = other;
+    }
+    return lower_point(x * y1 - t * x * hull(zero, upper_point(bound)));
+}
+
 Real superdisk_area(const Real& p) {
     const Real one = one_like(p);
     const Real g = gamma(one + one / (2 * p));

@@ -26,6 +26,12 @@ struct SuperdiskEquations {
     // D' = dD/dt + D_a a' + D_b b', with J (a', b') = -(0, dF1/dt) solved by Cramer's rule.
     // Its Jacobian determinant must exclude 0 (else the result is unbounded).
     Real derivative(const Real& a, const Real& b, const Real& t) const;
+    // At t = 0 (x = 1) the system gives |a| = |a - 1|: v = (1/2, y1), y1 = (1 - 2^-q)^(1/q).
+    Real axis_height() const;
+    // For t in [0, 1] and every solution (a, b) with det(u, v) > 0: b >= y1, and a <= 0 or
+    // 0 <= a <= min(x/2, x - (1 - 2^-q - (y1 - t x)^q)^(1/q)); so D >= x y1 - t x max(0, min(...))
+    // (NOTES.md 7.4, "A priori bound"). Lower end of that over the interval t.
+    Real a_priori_lower_bound(const Real& t) const;
 };
 
 // area(K) = 4 Gamma(1 + 1/(2p))^2 / Gamma(1 + 1/p).

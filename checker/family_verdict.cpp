@@ -12,11 +12,7 @@ Coordinates coordinates(const FormVector& v, const std::vector<Real>& values, mp
     return {evaluate(v[0], values, precision), evaluate(v[1], values, precision), evaluate(v[2], values, precision)};
 }
 
-Real norm(const Coordinates& v, const Real& p) {
-    const Real two_p = 2 * p;
-    const Real sum = pow_abs(v[0], two_p) + pow_abs(v[1], two_p) + pow_abs(v[2], two_p);
-    return pow_abs(sum, integer(1, p.precision()) / two_p);
-}
+Real norm(const Coordinates& v, const Real& p) { return lattice_norm(v, 2 * p); }
 
 Coordinates cross(const Coordinates& u, const Coordinates& w) {
     return {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};

@@ -99,6 +99,17 @@ Real log(const Real& x) {
     mpfi_log(r.get(), x.get());
     return r;
 }
+Real expm1(const Real& x) {
+    Real r(x.precision());
+    mpfi_expm1(r.get(), x.get());
+    return r;
+}
+Real log1p(const Real& x) {
+    if (!positive(x + integer(1, x.precision()))) throw std::domain_error("log1p of an interval that may be <= -1");
+    Real r(x.precision());
+    mpfi_log1p(r.get(), x.get());
+    return r;
+}
 Real abs(const Real& x) {
     Real r(x.precision());
     mpfi_abs(r.get(), x.get());

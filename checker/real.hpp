@@ -45,6 +45,8 @@ Real operator*(long n, const Real& a);
 
 Real exp(const Real& x);
 Real log(const Real& x);  // x > 0
+Real log1p(const Real& x);  // log(1 + x) for x > -1, accurate near 0 (MPFI's mpfi_log1p)
+Real expm1(const Real& x);  // exp(x) - 1, accurate near 0 (MPFI's mpfi_expm1)
 Real abs(const Real& x);
 // |x|^y for a nonnegative exponent y (the point 0 gives 1; an exponent interval reaching 0
 // needs |x| > 0): endpoint-wise, as x -> |x|^y is monotone on each side of 0.

@@ -31,18 +31,29 @@ def area(p):
     return 4 * gamma(1 + 1 / (2 * p)) ** 2 / gamma(1 + 1 / p)
 
 
+# Large p: s ~ ln2/(2p) while s + t -> 1, so (s + t)^(2p) costs log10(2p) digits; the roots are
+# computed with that many extra digits, and bracketed by [ln2/(4p), 1 - t] (f < 0 < f there),
+# since findroot's secant from 0.15 would need about 2p steps.
+def solve(f, p, t, small_p_start):
+    if p <= 10:
+        return findroot(f, small_p_start)
+    return findroot(f, (log(2) / (4 * p), 1 - t), solver="anderson")
+
+
 def c0(p):
-    t = mpf(2) ** (-1 / (2 * p))
-    s = findroot(lambda s: (s + t) ** (2 * p) + s ** (2 * p) + mpf(2) ** (-2 * p) - 1, mpf("0.15"))
-    det = mpf(2) ** (3 - 1 / (2 * p)) * (2 * s + t)
-    return {"s": s}, volume(p) / det
+    with mp.extradps(int(mp.log10(2 * p)) + 10):
+        t = mpf(2) ** (-1 / (2 * p))
+        s = solve(lambda s: (s + t) ** (2 * p) + s ** (2 * p) + mpf(2) ** (-2 * p) - 1, p, t, mpf("0.15"))
+        det = mpf(2) ** (3 - 1 / (2 * p)) * (2 * s + t)
+        return {"s": +s}, +(volume(p) / det)
 
 
 def c1(p):
-    t = mpf(2) ** (-1 / (2 * p))
-    s = findroot(lambda s: (s + t) ** (2 * p) + 2 * s ** (2 * p) - 1, mpf("0.2"))
-    det = mpf(2) ** (3 - 1 / p) * (3 * s + t)
-    return {"s": s}, volume(p) / det
+    with mp.extradps(int(mp.log10(2 * p)) + 10):
+        t = mpf(2) ** (-1 / (2 * p))
+        s = solve(lambda s: (s + t) ** (2 * p) + 2 * s ** (2 * p) - 1, p, t, mpf("0.2"))
+        det = mpf(2) ** (3 - 1 / p) * (3 * s + t)
+        return {"s": +s}, +(volume(p) / det)
 
 
 def o0(p):
@@ -67,7 +78,7 @@ def entry(family, p_text, parameters, phi):
 
 def main():
     families = []
-    for p_text in ["1", "1.1", "1.15", "1.5", "2", "3", "5", "10"]:
+    for p_text in ["1", "1.1", "1.15", "1.5", "2", "3", "5", "10", "150", "10000", "1000000"]:
         p = mpf(Fraction(p_text).numerator) / Fraction(p_text).denominator
         families.append(entry("C0", p_text, *c0(p)))
         families.append(entry("C1", p_text, *c1(p)))

@@ -297,3 +297,17 @@ TEST_CASE("check-lattice --certificate on the command line") {
     CHECK(!std::filesystem::exists(none));
     std::filesystem::remove_all(folder);
 }
+
+TEST_CASE("density certificates of C0 and C1 at p = 10^4 and 10^6 verify, in both backends") {
+    for (const char* p_text : {"10000", "1000000"})
+        for (superpack::Family family : {superpack::Family::C0, superpack::Family::C1}) {
+            INFO(superpack::to_string(family) << " at p = " << p_text);
+            CHECK(verify_document(certificate(family, p_text)).verdict == Verdict::valid);
+            const superpack::Rational p = superpack::parse_rational(p_text);
+            const superpack::BallField thirty{superpack::bits_for_digits(30)};
+            const auto lattice = superpack::enclose_family(family, p, thirty);
+            REQUIRE(lattice.status == superpack::FamilyStatus::certified);
+            CHECK(verify_document(Document::parse(superpack::family_certificate(lattice, p, thirty, 30).dump())).verdict ==
+                  Verdict::valid);
+        }
+}

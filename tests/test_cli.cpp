@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <memory>
 
+#include <stdlib.h>
+#include <unistd.h>
+
 #include "support.hpp"
 #include "superpack/arith/arb_access.hpp"
 
@@ -16,7 +19,11 @@ struct Run {
 
 // Runs the binary with `arguments` (shell words) in `directory` (empty: the current one).
 Run run(const std::string& arguments, const std::string& directory = "") {
-    const std::string err_path = std::tmpnam(nullptr);
+    // stderr goes to an exclusive temporary file (mkstemp: no name another process can take).
+    std::string err_path = (std::filesystem::temp_directory_path() / "superpack-test-stderr-XXXXXX").string();
+    const int descriptor = mkstemp(err_path.data());
+    REQUIRE(descriptor >= 0);
+    close(descriptor);
     const std::string command = (directory.empty() ? "" : "cd '" + directory + "' && ") + std::string(SUPERPACK_BINARY) + " " +
                                 arguments + " 2>" + err_path;
     Run result{0, "", ""};

@@ -87,6 +87,49 @@ TEST_CASE("log of binary64 intervals encloses MPFR's value, subnormals and power
     CHECK_THROWS(log(DInterval(-1.0, 2.0)));
 }
 
+TEST_CASE("log1p of binary64 intervals encloses MPFR's value with a relative error of a few ulps, tiny x included") {
+    std::mt19937_64 random(1951);
+    std::vector<double> points{0.0, 0x1p-1074, -0x1p-1074, 1e-300, -1e-300, 0.0625, -0.0625, 0.0625000000000001,
+                               -0.0624999999999999, 1.0, -0.5, -0.9999999999999999, 1e300, 3.4657359027997265e-7};
+    for (int k = 0; k < 20000; ++k) points.push_back((k % 2 ? -1 : 1) * random_positive(random, -1074, -1));
+    for (int k = 0; k < 4000; ++k) points.push_back(random_positive(random, -8, 1000));
+    for (int k = 0; k < 4000; ++k) points.push_back((k % 2 ? -1 : 1) * random_positive(random, -10, -4));
+    double worst = 0;
+    for (double x : points) {
+        if (!(x > -1)) continue;
+        const DInterval y = log1p(DInterval(x));
+        INFO("x = " << x);
+        REQUIRE(encloses(y, mpfr_log1p, x));
+        if (std::fabs(x) > 0x1p-1000) worst = std::max(worst, ulps(y));
+    }
+    CHECK(worst <= 12);
+    // A wide argument holds the values at both ends; x <= -1 is refused.
+    const DInterval wide = log1p(DInterval(-0.01, 0.5));
+    CHECK(encloses(wide, mpfr_log1p, -0.01));
+    CHECK(encloses(wide, mpfr_log1p, 0.5));
+    CHECK_THROWS(log1p(DInterval(-1.0, 0.0)));
+}
+
+TEST_CASE("expm1 of binary64 intervals encloses MPFR's value with a relative error of a few ulps, tiny x included") {
+    std::mt19937_64 random(1950);
+    std::vector<double> points{0.0, 0x1p-1074, -0x1p-1074, 1e-300, -1e-300, 0.5, -0.5, 0.5000000000000001,
+                               -0.5000000000000001, 1.0, -40.0, 700, -3.4657359027997265e-7, -0.6931471805599453};
+    for (int k = 0; k < 20000; ++k) points.push_back((k % 2 ? -1 : 1) * random_positive(random, -1074, -1));
+    for (int k = 0; k < 4000; ++k) points.push_back((k % 2 ? -1 : 1) * random_positive(random, -3, 9));
+    double worst = 0;
+    for (double x : points) {
+        if (x > 700) continue;
+        const DInterval y = expm1(DInterval(x));
+        INFO("x = " << x);
+        REQUIRE(encloses(y, mpfr_expm1, x));
+        if (std::fabs(x) > 0x1p-1000) worst = std::max(worst, ulps(y));
+    }
+    CHECK(worst <= 12);
+    const DInterval wide = expm1(DInterval(-0.75, 0.25));
+    CHECK(encloses(wide, mpfr_expm1, -0.75));
+    CHECK(encloses(wide, mpfr_expm1, 0.25));
+}
+
 TEST_CASE("Gamma of binary64 intervals encloses MPFR's value on and off the series range") {
     std::mt19937_64 random(1125);
     std::uniform_real_distribution<double> argument(1.0 / 16, 8);

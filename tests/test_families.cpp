@@ -78,3 +78,26 @@ TEST_CASE("densities match the paper's closed forms for |det| (Eqs. 3, 10, 7, 13
     const Ball l = o1.parameters[0].value, q = o1.parameters[1].value, s = o1.parameters[2].value;
     CHECK(overlaps(abs(*o1.determinant), field.integer(8) * l * (field.integer(3) * q * q + s * s)));
 }
+
+// Large p (NOTES.md section 4, "Large p"): s ~ ln2/(2p) while s + t -> 1. Before the contact
+// equation was evaluated through log1p(s - (1 - t)), the double guess from s = 0.2 did not reach
+// the root within its 40 steps beyond p ~ 110 (undecided), and (s + t)^(2p) with s + t rounded would
+// keep s only to 2p units in its last place.
+TEST_CASE("C0 and C1 at p = 150, 10^4 and 10^6: certified in both backends, the two overlap, s to full relative width") {
+    const DoubleField binary64;
+    const BallField thirty{bits_for_digits(30)};
+    for (const char* p_text : {"150", "10000", "1000000"})
+        for (Family family : {Family::C0, Family::C1}) {
+            INFO(to_string(family) << " at p = " << p_text);
+            const Rational p = parse_rational(p_text);
+            const auto low = enclose_family(family, p, binary64);
+            const auto high = enclose_family(family, p, thirty);
+            REQUIRE(low.status == FamilyStatus::certified);
+            REQUIRE(high.status == FamilyStatus::certified);
+            CHECK(overlaps(as_ball(*low.phi), *high.phi));
+            CHECK(overlaps(as_ball(low.parameters[0].value), high.parameters[0].value));
+            // Relative widths of s near the working precision, whatever p: 2^-44 and 2^-95.
+            CHECK(width_upper(low.parameters[0].value) <= std::ldexp(mid_double(low.parameters[0].value), -44));
+            CHECK(width_upper(high.parameters[0].value) <= std::ldexp(mid_double(high.parameters[0].value), -95));
+        }
+}

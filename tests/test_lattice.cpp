@@ -77,6 +77,22 @@ TEMPLATE_TEST_CASE("the published families at the acceptance points: 12 contacts
     }
 }
 
+// At p = 10^4 a norm near 2 has 2^(2p) in its 2p-th power, beyond binary64's range: the norm is
+// taken of v/2 (before, binary64 left (1, 1, 0) and (1, -1, 0) of C0 undecided, norm [-inf, inf]).
+TEMPLATE_TEST_CASE("C0 and C1 at p = 10^4 and 10^6: packings with the family's 12 contacts", "", Binary64, Arb128) {
+    const TestType field;
+    for (const char* p_text : {"10000", "1000000"})
+        for (Family family : {Family::C0, Family::C1}) {
+            INFO(to_string(family) << " at p = " << p_text);
+            const Rational p = parse_rational(p_text);
+            const auto check = check_family_lattice(enclose_family(family, p, field), field.rational(p));
+            CHECK(check.verdict == Verdict::admissible);
+            CHECK(check.contacts() == 12);
+            REQUIRE(check.min_norm);
+            CHECK(meets(*check.min_norm, "2"));
+        }
+}
+
 TEMPLATE_TEST_CASE("Minkowski's octahedron lattice at p = 1/2: 14 contacts, decided exactly", "", Binary64, Arb128) {
     const TestType field;
     const auto check = check_exact_lattice(parse_basis(minkowski), Rational(1, 2), field);

@@ -119,6 +119,11 @@ Ball log(const Ball& x) {
     if (!arb_is_positive(arb_of(x))) throw std::domain_error("log: argument not certainly positive");
     return unary(x, arb_log);
 }
+Ball log1p(const Ball& x) {
+    if (!arb_is_positive(arb_of(x + 1))) throw std::domain_error("log1p: argument not certainly > -1");
+    return unary(x, arb_log1p);
+}
+Ball expm1(const Ball& x) { return unary(x, arb_expm1); }
 Ball sqrt(const Ball& x) { return unary(x, arb_sqrt); }
 Ball square(const Ball& x) {
     Ball result(x.precision());

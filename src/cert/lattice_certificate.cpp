@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "superpack/arith/exact.hpp"
+#include "superpack/geometry/exact_norm.hpp"
 
 namespace superpack {
 
@@ -25,15 +26,6 @@ std::array<Rational, 3> exact_vector(const Basis<Rational>& basis, const Coeffic
     return v;
 }
 
-// How an exact contact is decided (NOTES.md 5.3), in words for the reader of the file.
-std::string contact_reason(const Rational& p) {
-    Rational two_p = 2 * p;
-    two_p.canonicalize();
-    if (two_p.get_den() == 1)
-        return "2p = " + two_p.get_num().get_str() + " is an integer: sum |v_i|^(2p) = 2^(2p) in rational arithmetic";
-    return "the k nonzero coordinates share one absolute value a, and (a/2)^m k^n = 1 with 2p = m/n, exactly";
-}
-
 }  // namespace
 
 template <class Field>
@@ -44,8 +36,11 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
     const Json basis_json = rational_basis_json(basis);
     const bool packing = check.verdict == Verdict::admissible;
 
-    // The data the coefficient bound comes from: |det| and ||e_j x e_k||_1 (NOTES.md 5.2).
-    const Basis<I> enclosed = enclose_basis(basis, field);
+    // The enumeration ran on the reduced basis R = U B (NOTES.md 5.6): its transform, and the data
+    // its coefficient bound comes from, |det R| and ||r_j x r_k||_1 (NOTES.md 5.2).
+    const BasisReduction reduction = check.reduction ? *check.reduction : BasisReduction{true, "", identity_transform(), basis};
+    const Basis<Rational>& reduced = reduction.reduced;
+    const Basis<I> enclosed = enclose_basis(reduced, field);
     Json cross_norms = Json::array();
     for (int i = 0; i < 3; ++i) {
         const auto& u = enclosed[(i + 1) % 3];
@@ -53,7 +48,7 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
         const I norm = abs(u[1] * w[2] - u[2] * w[1]) + abs(u[2] * w[0] - u[0] * w[2]) + abs(u[0] * w[1] - u[1] * w[0]);
         cross_norms.push_back(exact_interval_json(norm));
     }
-    Json candidates = Json::array();
+    Json candidates = Json::array(), contacts = Json::array();
     for (const auto& candidate : check.evaluated) {
         const bool contact = std::find(check.contact_vectors.begin(), check.contact_vectors.end(), candidate.coefficients) !=
                              check.contact_vectors.end();
@@ -63,16 +58,21 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
                              : certainly_less(candidate.norm, two) ? "below"
                              : certainly_less(two, candidate.norm) ? "above"
                                                                    : "undecided";
-        candidates.push_back(Json{{"coefficients", coefficients_json(candidate.coefficients)},
+        // In the reduced basis, one triple per +-pair as the enumeration lists them.
+        const Coefficients enumerated = representative(candidate.enumerated);
+        candidates.push_back(Json{{"coefficients", coefficients_json(enumerated)},
                                   {"norm", exact_interval_json(candidate.norm)},
                                   {"status", status}});
-    }
-    Json contacts = Json::array();
-    for (const auto& c : check.contact_vectors) {
-        if (c[0] < 0 || (c[0] == 0 && (c[1] < 0 || (c[1] == 0 && c[2] < 0)))) continue;  // one per +-pair
-        Json vector = Json::array();
-        for (const Rational& x : exact_vector(basis, c)) vector.push_back(rational_text(x));
-        contacts.push_back(Json{{"coefficients", coefficients_json(c)}, {"vector", vector}, {"decided", contact_reason(p)}});
+        if (!contact) continue;
+        // Each contact pair once, in the reduced basis, with its exact vector and its coefficients
+        // in the given basis.
+        const std::array<Rational, 3> vector = exact_vector(reduced, enumerated);
+        Json exact = Json::array();
+        for (const Rational& x : vector) exact.push_back(rational_text(x));
+        contacts.push_back(Json{{"coefficients", coefficients_json(enumerated)},
+                                {"given_coefficients", coefficients_json(given_coefficients(enumerated, reduction.transform))},
+                                {"vector", exact},
+                                {"decided", decide_norm_is_two(vector, p).reason}});
     }
     Json contact_vectors = Json::array();
     for (const auto& c : check.contact_vectors) contact_vectors.push_back(coefficients_json(c));
@@ -88,15 +88,18 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
     } else {
         const Coefficients& w = check.witness->coefficients;
         text += " is not a packing: the lattice vector with coefficients (" + std::to_string(w[0]) + ", " +
-                std::to_string(w[1]) + ", " + std::to_string(w[2]) + ") has 2p-norm < 2";
+                std::to_string(w[1]) + ", " + std::to_string(w[2]) + ") in these rows has 2p-norm < 2";
         data["witness"] = Json{{"coefficients", coefficients_json(w)}, {"norm", exact_interval_json(check.witness->norm)}};
     }
     Json claim{{"kind", "lattice-check"}, {"text", text}, {"data", data}};
     Json inputs{{"basis", basis_json}, {"p", rational_text(p)}, {"p_decimal", decimal_or_fraction_text(p)}};
     Json proof{{"kind", "enumeration"},
-               {"text", "by Cramer and Hoelder every v = a e1 + b e2 + c e3 with ||v||_(2p) <= 2 has |a_i| <= "
-                        "floor(2 ||e_j x e_k||_1 / |det|); every triple in that box (one per +-pair) is listed unless a "
-                        "coordinate exceeds 2 in size, with its norm enclosure: above 2, below 2, or a contact decided exactly"},
+               {"text", "the reduced basis r_i = sum_k U_ik e_k (U integral, det U = +-1) spans the same lattice; by "
+                        "Cramer and Hoelder every v = a r1 + b r2 + c r3 with ||v||_(2p) <= 2 has |a_i| <= "
+                        "floor(2 ||r_j x r_k||_1 / |det R|); every triple in that box (one per +-pair) is listed unless a "
+                        "coordinate exceeds 2 in size, with its norm enclosure: above 2, below 2, or a contact decided "
+                        "exactly; (a, b, c) in R is (a, b, c) U in the given basis"},
+               {"reduction", reduction_json(reduction)},
                {"coefficient_bound", coefficients_json(check.coefficient_bound)},
                {"bound_data", Json{{"determinant", exact_interval_json(abs(determinant(enclosed)))},
                                    {"cross_norms", cross_norms}}},

@@ -40,9 +40,12 @@ const char* const exclusion_text =
 
 template <class I>
 Json lattice_proof_json(const HexagonLattice<I>& lattice) {
+    const bool axis = contains(field_of(lattice.t).integer(0), lattice.t);
     return Json{{"search_box", box_json(lattice.search_box)},
-                {"reason", "Krawczyk: K(X) in the interior of X for the contact system at the lattice's t (claim.data.lattices), "
-                           "and det(u, v) > 0"}};
+                {"reason", axis ? "closed form at t = 0: the contact system gives |a| = |a - 1|, so v = (1/2, (1 - 2^-q)^(1/q)) "
+                                  "(the search box is that point)"
+                                : "Krawczyk: K(X) in the interior of X for the contact system at the lattice's t "
+                                  "(claim.data.lattices), and det(u, v) > 0"}};
 }
 
 template <class I>
@@ -117,11 +120,15 @@ Json superdisk_certificate(const SuperdiskReport<typename Field::Interval>& repo
                {"symmetry", symmetry_text},
                {"excluded", exclusion_text},
                {"text", "The pieces cover [0, 1]. On each, Krawczyk with t the whole piece proves one v(t) in the search "
-                        "box for every t in it. A piece is monotone (D' of one sign, by implicit differentiation: its lower "
-                        "bound is D at one end), bounded (its lower bound is the naive enclosure of D, or that intersected "
-                        "with the mean-value form D(m) + D'(T)(T - m)), or discarded (its lower bound exceeds D of the "
-                        "witness lattice). min D lies between the least lower bound of the pieces not discarded and D of "
-                        "the witness; every minimiser lies in a piece not discarded."},
+                        "box for every t in it (at the point t = 0, v = (1/2, (1 - 2^-q)^(1/q)) in closed form). A piece is "
+                        "monotone (D' of one sign, by implicit differentiation: its lower bound is D at one end), bounded "
+                        "(its lower bound is the naive enclosure of D, or that intersected with the mean-value form "
+                        "D(m) + D'(T)(T - m); or, method a_priori, for a piece with no Krawczyk proof, "
+                        "x y1 - t x max(0, min(x/2, x - (1 - 2^-q - (y1 - t x)^q)^(1/q))) with y1 = (1 - 2^-q)^(1/q), "
+                        "a lower bound of det(u, v) for every solution v with det(u, v) > 0 at every t of the piece), "
+                        "or discarded (its lower bound exceeds D of the witness lattice). min D lies "
+                        "between the least lower bound of the pieces not discarded and D of the witness; every minimiser "
+                        "lies in a piece not discarded."},
                {"witness", Json{{"t", exact_interval_json(report.optimal_lattice.t)},
                                 {"search_box", box_json(report.optimal_lattice.search_box)},
                                 {"determinant", exact_interval_json(report.optimal_lattice.determinant)}}},

@@ -41,8 +41,14 @@ void print_table(const LatticeCheck<I>& check, const std::optional<I>& phi, int 
         std::cout << "witness      " << triple_text(check.witness->coefficients) << "  norm "
                   << enclosure_text(check.witness->norm) << "\n";
     if (phi) std::cout << "phi          " << enclosure_text(*phi) << "\n";
+    if (check.reduction) {
+        const Transform& u = check.reduction->transform;
+        std::cout << "coefficients of contacts and witness are in the given basis; enumerated in its LLL reduction\n"
+                  << "reduced      r_i = sum_k U_ik e_k, U = " << triple_text(u[0]) << ", " << triple_text(u[1]) << ", "
+                  << triple_text(u[2]) << "\n";
+    }
     std::cout << "enumerated   |a| <= " << check.coefficient_bound[0] << ", |b| <= " << check.coefficient_bound[1]
-              << ", |c| <= " << check.coefficient_bound[2] << "\n";
+              << ", |c| <= " << check.coefficient_bound[2] << (check.reduction ? "  (in the reduced basis)" : "") << "\n";
 }
 
 void write_or_fail(const std::string& path, const Json& certificate) {

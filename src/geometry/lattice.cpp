@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "superpack/geometry/exact_norm.hpp"
+
 namespace superpack {
 
 const char* to_string(Verdict verdict) {
@@ -19,7 +21,7 @@ const char* to_string(Verdict verdict) {
 namespace {
 
 // The largest integer N with N <= every value of x (x certainly nonnegative), or -1 when x is
-// unbounded or too large to enumerate.
+// unbounded or larger than the box limit.
 template <class I>
 long floor_of_upper(const I& x) {
     mpfr_t lo, hi;
@@ -29,7 +31,7 @@ long floor_of_upper(const I& x) {
     const double upper = mpfr_get_d(hi, MPFR_RNDU);
     mpfr_clear(lo);
     mpfr_clear(hi);
-    if (!std::isfinite(upper) || upper > 1000.0) return -1;
+    if (!std::isfinite(upper) || upper > static_cast<double>(enumeration_box_limit)) return -1;
     return static_cast<long>(std::floor(upper));
 }
 
@@ -48,6 +50,9 @@ LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactPr
     // The criterion ||u - v||_(2p) >= 2 needs a convex body: p >= 1/2 on the whole piece.
     if (!certainly_nonnegative(field.integer(2) * p - field.integer(1)))
         throw InputError("the packing criterion needs p >= 1/2 on the whole p interval");
+    if (!certainly_nonnegative(field.integer(1000000000000000) - p))
+        throw InputError("the lattice check supports p <= 10^15 (beyond, a norm 2 (1 + 2^-2p)^(1/(2p)) is within "
+                         "binary64's rounding of 2, and the 2p-th powers of coordinates near 2 overflow)");
     const I det = determinant(basis);
     if (contains_zero(det)) {
         check.reason = "the basis is not certainly nonsingular (determinant encloses 0)";
@@ -60,10 +65,22 @@ LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactPr
         const I bound = two * (abs(normal[0]) + abs(normal[1]) + abs(normal[2])) / abs(det);
         const long n = floor_of_upper(bound);
         if (n < 0) {
-            check.reason = "the coefficient box is too large to enumerate (basis too skewed or too wide)";
+            check.reason = "the coefficient box is too large to enumerate: |a_" + std::to_string(i + 1) +
+                           "| may reach beyond " + std::to_string(enumeration_box_limit) + " (basis too flat or too wide)";
             return check;
         }
         check.coefficient_bound[i] = n;
+    }
+    long triples = 1;  // at most the limit times 2 * limit + 1 at each step: no overflow
+    for (long n : check.coefficient_bound) {
+        triples *= 2 * n + 1;
+        if (triples > enumeration_box_limit) {
+            check.reason = "the coefficient box |a| <= " + std::to_string(check.coefficient_bound[0]) + ", |b| <= " +
+                           std::to_string(check.coefficient_bound[1]) + ", |c| <= " +
+                           std::to_string(check.coefficient_bound[2]) + " holds more than " +
+                           std::to_string(enumeration_box_limit) + " triples, the enumeration's limit";
+            return check;
+        }
     }
     const I two_p = field.integer(2) * p;
     const I inverse_two_p = field.integer(1) / two_p;
@@ -85,9 +102,20 @@ LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactPr
                     ++check.excluded_by_max_norm;
                     continue;
                 }
-                const std::vector<I> coordinates(v.begin(), v.end());
-                const I norm = pow_nonneg(gauge_power(coordinates, two_p), inverse_two_p);
-                LatticeVector<I> candidate{{a, b, c}, v, norm};
+                // ||v|| = 2 ||v/2||: the halves are at most 1 in size here, so their 2p-th powers
+                // cannot overflow (2^(2p) does beyond p = 512 in binary64). Halving is exact.
+                const std::vector<I> halves{v[0] / two, v[1] / two, v[2] / two};
+                const I norm = two * pow_nonneg(gauge_power(halves, two_p), inverse_two_p);
+                LatticeVector<I> candidate{{a, b, c}, {a, b, c}, v, norm};
+                if (check.evaluated.size() == enumeration_candidate_limit) {
+                    check.reason = "more than " + std::to_string(enumeration_candidate_limit) +
+                                   " lattice vectors with every coordinate at most 2 in size, the enumeration's limit "
+                                   "(the lattice is too dense: |det| is about 64 / that count)";
+                    check.evaluated.clear();
+                    check.contact_vectors.clear();
+                    check.near_contacts.clear();
+                    return check;
+                }
                 check.evaluated.push_back(candidate);
                 if (certainly_less(norm, two)) {
                     below.push_back(candidate);
@@ -161,48 +189,41 @@ Basis<Rational> parse_basis(const std::string& text) {
 
 namespace {
 
-// x^k for a whole k >= 0, exactly.
-Rational power(const Rational& x, long k) {
-    Rational result = 1;
-    for (long i = 0; i < k; ++i) result *= x;
-    return result;
-}
-
-// Exactly decides ||v||_(2p) = 2, or returns false when the exact test does not apply.
-bool exact_norm_is_two(const std::array<Rational, 3>& v, const Rational& p) {
-    Rational two_p = 2 * p;
-    two_p.canonicalize();
-    const mpz_class& m = two_p.get_num();
-    const mpz_class& n = two_p.get_den();
-    if (!m.fits_slong_p() || m > 64) return false;
-    if (n == 1) {  // sum |v_i|^m = 2^m in rationals
-        Rational sum = 0;
-        for (const Rational& x : v) sum += power(abs(x), m.get_si());
-        return sum == power(Rational(2), m.get_si());
-    }
-    // Nonzero coordinates sharing one absolute value a, k of them: k a^(m/n) = 2^(m/n)
-    // <=> (a/2)^m = k^(-n) (both sides positive).
-    Rational a = 0;
-    long k = 0;
-    for (const Rational& x : v) {
-        if (x == 0) continue;
-        if (k > 0 && abs(x) != a) return false;
-        a = abs(x);
-        ++k;
-    }
-    if (k == 0 || !n.fits_slong_p() || n > 64) return false;
-    return power(a / 2, m.get_si()) * power(Rational(k), n.get_si()) == 1;
-}
-
-
+// The check runs on the LLL-reduced basis R = U B, whose coefficient box is small for any basis
+// of a lattice that is not itself very flat; a vector with coefficients c in R has coefficients
+// c U in B, which is how every result is reported (NOTES.md 5.6).
 template <class Field>
 LatticeCheck<typename Field::Interval> check_exact(const Basis<Rational>& basis, const Rational& p, const Field& field) {
+    using I = typename Field::Interval;
     if (p < Rational(1, 2)) throw InputError("check-lattice needs p >= 1/2 (the superball must be convex)");
-    return check_lattice(enclose_basis(basis, field), field.rational(p), [&](const Coefficients& c) {
+    const BasisReduction reduction = reduce_basis(basis);
+    if (!reduction.done) {
+        LatticeCheck<I> check;
+        check.reason = reduction.reason;
+        return check;
+    }
+    const Basis<Rational>& reduced = reduction.reduced;
+    LatticeCheck<I> check = check_lattice(enclose_basis(reduced, field), field.rational(p), [&](const Coefficients& c) {
         std::array<Rational, 3> v;
-        for (int j = 0; j < 3; ++j) v[j] = c[0] * basis[0][j] + c[1] * basis[1][j] + c[2] * basis[2][j];
-        return exact_norm_is_two(v, p);
+        for (int j = 0; j < 3; ++j) v[j] = c[0] * reduced[0][j] + c[1] * reduced[1][j] + c[2] * reduced[2][j];
+        return decide_norm_is_two(v, p).answer == ExactNorm::two;
     });
+    // One per +-pair in the given basis too: v or -v, whichever has its first coefficient positive.
+    auto to_given = [&](LatticeVector<I>& x) {
+        x.coefficients = given_coefficients(x.enumerated, reduction.transform);
+        if (representative(x.coefficients) == x.coefficients) return;
+        for (int j = 0; j < 3; ++j) {
+            x.coefficients[j] = -x.coefficients[j];
+            x.enumerated[j] = -x.enumerated[j];
+            x.vector[j] = -x.vector[j];
+        }
+    };
+    for (auto& x : check.evaluated) to_given(x);
+    for (auto& x : check.near_contacts) to_given(x);
+    if (check.witness) to_given(*check.witness);
+    for (auto& c : check.contact_vectors) c = given_coefficients(c, reduction.transform);
+    check.reduction = reduction;
+    return check;
 }
 
 }  // namespace
@@ -216,6 +237,24 @@ LatticeCheck<Ball> check_exact_lattice(const Basis<Rational>& basis, const Ratio
 }
 
 Json coefficients_json(const Coefficients& c) { return Json::array({c[0], c[1], c[2]}); }
+
+Coefficients representative(const Coefficients& c) {
+    const bool negative = c[0] < 0 || (c[0] == 0 && (c[1] < 0 || (c[1] == 0 && c[2] < 0)));
+    return negative ? Coefficients{-c[0], -c[1], -c[2]} : c;
+}
+
+Json reduction_json(const BasisReduction& reduction) {
+    Json transform = Json::array(), reduced = Json::array();
+    for (int i = 0; i < 3; ++i) {
+        transform.push_back(coefficients_json(reduction.transform[i]));
+        Json row = Json::array();
+        for (const Rational& x : reduction.reduced[i]) row.push_back(rational_text(x));
+        reduced.push_back(row);
+    }
+    return Json{{"method", "LLL (FLINT fmpz_lll, delta 0.99, eta 0.51) of the exact basis"},
+                {"transform", transform},
+                {"reduced_basis", reduced}};
+}
 
 template <class I>
 Json lattice_check_json(const LatticeCheck<I>& check, bool with_evaluated) {
@@ -242,6 +281,8 @@ Json lattice_check_json(const LatticeCheck<I>& check, bool with_evaluated) {
     result["witness"] = check.witness ? vector_json(*check.witness) : Json(nullptr);
     result["coefficient_bound"] = coefficients_json(check.coefficient_bound);
     result["excluded_by_max_norm"] = check.excluded_by_max_norm;
+    // Coefficients above are in the given basis; the box is that of the reduced basis.
+    result["reduction"] = check.reduction ? reduction_json(*check.reduction) : Json(nullptr);
     if (with_evaluated) {
         Json evaluated = Json::array();
         for (const auto& x : check.evaluated) evaluated.push_back(vector_json(x));

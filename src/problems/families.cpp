@@ -37,6 +37,16 @@ std::string family_domain_text(Family family) {
 
 void require_in_domain(Family family, const Rational& p) {
     const Rational half(1, 2);
+    // The floating-point guesses (of s for C0, C1, of the roots for O1) need 2p to be a finite
+    // binary64 number with a normal reciprocal.
+    static const Rational largest = [] {
+        Rational power = 1;
+        for (int k = 0; k < 300; ++k) power *= 10;
+        return power;
+    }();
+    if (p > largest)
+        throw InputError(std::string("p = ") + decimal_or_fraction_text(p) + " is beyond the supported p <= 10^300 of " +
+                         to_string(family) + " (the floating-point guesses need 2p to be a finite binary64 number)");
     bool inside = true;
     switch (family) {
         case Family::C0:
@@ -66,15 +76,23 @@ template <class I>
 FamilyLattice<I> enclose_cubic(Family family, const I& p) {
     FamilyLattice<I> lattice{family};
     const auto field = field_of(p);
+    // The guess starts at 1 - t, where f = s^(2p) + 2^(-2p) > 0 (C0) or 2 s^(2p) > 0 (C1): f is
+    // increasing and convex on s >= 0, so Newton descends monotonically to the root, in a few
+    // steps for every p (from a fixed start such as 0.2 it needs about 2p steps at large p,
+    // because (s + t)^(2p) only shrinks by a factor e per step there).
     const double p_guess = mid_double(p);
-    const double s_guess = guess_root([&](const auto& s) { return cubic_equation(family, s, p_guess); }, 0.2);
+    const double start = cubic_constants(p_guess).deficit;
+    const double s_guess = guess_root([&](const auto& s) { return cubic_equation(family, s, p_guess); }, start);
     const CubicConstants<I> constants = cubic_constants(p);
     auto equation = [&](const auto& s) { return cubic_equation(family, s, constants); };
-    const double spread = std::max(width_upper(p), 1e-12);
+    const double spread = width_upper(p);
     // Newton stops within 2^8 units in the last place of s: quadratic convergence jumps from
     // far above that to the rounding floor, so the stall test would only cost one more step.
     const double target_width = std::ldexp(s_guess, -static_cast<int>(field.bits()) + 8);
-    for (double radius = 1e-11 + 4 * spread; radius < 0.5; radius *= 64) {
+    // The first radius is relative to s, plus 4 |ds/dp| times the spread of p (an audit piece,
+    // or the rounding of a p that is not a double), where |ds/dp| <= s/p is a guess that holds
+    // on [1, 10] and asymptotically (s ~ ln2/(2p)).
+    for (double radius = (1e-10 + 4 * spread / p_guess) * s_guess; radius < 0.5; radius *= 64) {
         // The lower end is cut to 24 significant bits so that a ball backend (30-bit radius)
         // holds [0, lower end] exactly: the root-free piece below must not reach the root.
         // It also sits at least 2^-20 s below the guess: a ball holding [0, lower end] + t
@@ -138,16 +156,21 @@ FamilyLattice<I> enclose_o1(const I& p) {
     std::sort(lattice.branches.begin(), lattice.branches.end(), [](const RootBranch<I>& a, const RootBranch<I>& b) {
         return mid_double(a.unknowns[1].value) > mid_double(b.unknowns[1].value);
     });
-    if (undecided > 0) {
-        lattice.message = std::to_string(undecided) + " pieces of the (q, s) box undecided";
-        return lattice;
-    }
     const I crossover = octahedral_crossover(p);
     const bool before = certainly_less(p, crossover), after = certainly_less(crossover, p);
+    // Beyond p*_o there is no lattice on the branch whatever the search finds: the roots are
+    // listed for information only, so undecided pieces (at large p, where the equations are
+    // nearly flat in q) do not make the verdict undecided.
     if (after) {
         lattice.status = FamilyStatus::no_lattice;
         lattice.message = "the Minkowski branch of Eq. (12) ends at p*_o = ln3/ln4; here Eq. (12) has " +
-                          std::to_string(lattice.branches.size()) + " root(s) with q >= 0, none on that branch";
+                          std::to_string(lattice.branches.size()) + " root(s) with q >= 0" +
+                          (undecided > 0 ? " certified (" + std::to_string(undecided) + " pieces of the (q, s) box undecided)" : "") +
+                          ", none on that branch";
+        return lattice;
+    }
+    if (undecided > 0) {
+        lattice.message = std::to_string(undecided) + " pieces of the (q, s) box undecided";
         return lattice;
     }
     if (!before || lattice.branches.size() != 2) {

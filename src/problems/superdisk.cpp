@@ -25,6 +25,7 @@ const char* to_string(LowerBoundMethod method) {
         case LowerBoundMethod::naive_and_mean_value: return "naive_and_mean_value";
         case LowerBoundMethod::left_end: return "left_end";
         case LowerBoundMethod::right_end: return "right_end";
+        case LowerBoundMethod::a_priori: return "a_priori";
     }
     return "naive";
 }
@@ -38,6 +39,8 @@ const char* to_string(OptimumStatus status) {
     return "undecided";
 }
 
+const Rational superdisk_largest_p(1000000);
+
 namespace {
 
 // A floating-point guess of v(t) (only a starting box, re-verified by Krawczyk).
@@ -46,9 +49,12 @@ namespace {
 std::array<double, 2> guess_v(double t, double q) {
     const double x = boundary_x(t, q), y = t * x;
     const double theta = std::atan2(y, x), pi = 3.141592653589793;
+    // The boundary point in direction (c, s): scaled by the larger of |c|, |s| first, so that the
+    // q-th powers neither underflow (both below 1 in size) nor overflow at large q.
     auto on_boundary = [q](double angle) {
         const double c = std::cos(angle), s = std::sin(angle);
-        const double r = std::pow(std::pow(std::fabs(c), q) + std::pow(std::fabs(s), q), -1.0 / q);
+        const double large = std::max(std::fabs(c), std::fabs(s)), small = std::min(std::fabs(c), std::fabs(s));
+        const double r = std::exp(-std::log1p(std::pow(small / large, q)) / q) / large;
         return std::array<double, 2>{r * c, r * s};
     };
     double lo = theta, hi = theta + pi;
@@ -58,6 +64,12 @@ std::array<double, 2> guess_v(double t, double q) {
         (std::pow(std::fabs(v[0] - x), q) + std::pow(std::fabs(v[1] - y), q) < 1 ? lo : hi) = mid;
     }
     auto [a, b] = on_boundary(0.5 * (lo + hi));
+    // Newton steps, each kept only if it lowers the residual (at large q the bisection is often
+    // as good as double allows, and a step on the nearly singular system can only lose).
+    auto residual = [&](double x0, double x1) {
+        const auto f = contact_equations(x0, x1, t, q);
+        return std::max(std::fabs(f[0]), std::fabs(f[1]));
+    };
     for (int step = 0; step < 4; ++step) {
         const auto fa = contact_equations(variable(a), constant(b), constant(t), q);
         const auto fb = contact_equations(constant(a), variable(b), constant(t), q);
@@ -66,7 +78,7 @@ std::array<double, 2> guess_v(double t, double q) {
         if (!(std::fabs(det) > 0)) break;
         const double f0 = fa[0].value, f1 = fa[1].value;
         const double da = (j11 * f0 - j01 * f1) / det, db = (-j10 * f0 + j00 * f1) / det;
-        if (!std::isfinite(da) || !std::isfinite(db)) break;
+        if (!std::isfinite(da) || !std::isfinite(db) || !(residual(a - da, b - db) < residual(a, b))) break;
         a -= da;
         b -= db;
     }
@@ -138,6 +150,17 @@ HexagonLattice<I> lattice_at(const I& t, const I& q, const I& area) {
     const auto field = field_of(t);
     HexagonLattice<I> lattice(field.integer(0));
     lattice.t = t;
+    if (contains(field.integer(0), t)) {
+        // t = 0 (Lambda1): v = (1/2, y1) in closed form; its "search box" is that point.
+        const I half = field.integer(1) / field.integer(2), height = axis_height(q), two = field.integer(2);
+        lattice.status = RootStatus::unique;
+        lattice.reason = "closed form at t = 0: v = (1/2, (1 - 2^-q)^(1/q))";
+        lattice.search_box = {half, height};
+        lattice.basis = {{{two, field.integer(0)}, {field.integer(1), two * height}}};
+        lattice.determinant = field.integer(4) * height;
+        lattice.phi = area / lattice.determinant;
+        return lattice;
+    }
     const Evaluation<I> at = evaluate(t, q, 1e-9, false);
     lattice.status = at.status;
     lattice.reason = at.reason;
@@ -167,6 +190,10 @@ template <class Field>
 SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p, const Field& field,
                                                                 const SuperdiskOptions& options) {
     using I = typename Field::Interval;
+    if (p > superdisk_largest_p)
+        throw InputError("superdisk: p = " + decimal_or_fraction_text(p) +
+                         " is beyond the supported p <= 10^6 (near its minimum det(u, v) differs from 1 by about "
+                         "(ln 2)^2/(2p)^2, below what the branch and bound resolves)");
     SuperdiskReport<I> report(field.integer(0));
     const I pp = field.rational(p);
     const I q = field.integer(2) * pp;
@@ -221,10 +248,37 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
             const I d = family->determinant / field.integer(4);
             if (!known || mid_double(d) < mid_double(known->value)) known = PointValue<I, HexagonLattice<I>>{d, *family};
         }
+    MinimiseOptions search;
+    search.relative_tolerance = options.relative_tolerance;
+    search.max_pieces = options.max_pieces;
+    // A piece whose contact system is not yet certified is split (its v(t) varies too much
+    // for one Krawczyk box); below 1e-12 it is kept as undecided, never dropped,
+    // unless the a priori bound below decides it.
+    search.min_undecided_width = 1e-12;
+    search.min_width = 1e-14;
+    // The best value found so far, so that a piece bounded a priori can be seen to be discarded.
+    std::optional<I> best_seen;
+    if (known) best_seen = known->value;
     auto value_at = [&](const std::vector<I>& t) -> std::optional<PointValue<I, HexagonLattice<I>>> {
         const HexagonLattice<I> lattice = lattice_at(t[0], q, report.area);
         if (lattice.status != RootStatus::unique) return std::nullopt;
-        return PointValue<I, HexagonLattice<I>>{lattice.determinant / field.integer(4), lattice};
+        const I d = lattice.determinant / field.integer(4);
+        if (!best_seen || certainly_less(d, *best_seen)) best_seen = d;
+        return PointValue<I, HexagonLattice<I>>{d, lattice};
+    };
+    // A piece whose v(t) Krawczyk cannot follow (for large q, near t = 0) is bounded instead by
+    // a_priori_lower_bound, which needs no v: when that bound already exceeds the best lattice
+    // (the piece will be discarded), or when a piece holding t = 0 is too narrow to split.
+    auto a_priori_piece = [&](Piece piece) {
+        piece.verdict = PieceVerdict::bounded;
+        piece.method = LowerBoundMethod::a_priori;
+        piece.lower_bound = a_priori_lower_bound(piece.t, q);
+        piece.reason = "a priori bound of D from the contact equations, for every v with det(u, v) > 0";
+        // What the bound's proof shows of v = (a, b): -(1 - x) <= a <= x/2 and y1 <= b <= 1.
+        const I x = boundary_x(piece.t, q);
+        piece.v = {hull(lower_point(x) - one, upper_point(x) / field.integer(2)), hull(axis_height(q), one)};
+        piece.search_box.clear();
+        return piece;
     };
     auto bound_piece = [&](const std::vector<I>& box) {
         const I& t = box[0];
@@ -237,6 +291,10 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
         const Evaluation<I> at = evaluate(t, q, 1e-9 + 1e-3 * width_upper(t));
         if (at.status != RootStatus::unique) {
             piece.reason = "contact system not certified on the piece: " + at.reason;
+            const Piece bounded_a_priori = a_priori_piece(piece);
+            const bool too_narrow = width_upper(t) < search.min_undecided_width && contains(t, zero);
+            if (too_narrow || (best_seen && certainly_less(upper_point(*best_seen), bounded_a_priori.lower_bound)))
+                return BoundedBox<I, Piece>{box, true, bounded_a_priori.lower_bound, bounded_a_priori, bounded_a_priori.reason};
             return BoundedBox<I, Piece>{box, false, zero, piece, piece.reason};
         }
         piece.v = at.v;
@@ -268,13 +326,6 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
         }
         return bounded(PieceVerdict::bounded, "naive and mean-value enclosures of D");
     };
-    MinimiseOptions search;
-    search.relative_tolerance = options.relative_tolerance;
-    search.max_pieces = options.max_pieces;
-    // A piece whose contact system is not yet certified is split (its v(t) varies too much
-    // for one Krawczyk box); below 1e-12 it is kept as undecided, never dropped.
-    search.min_undecided_width = 1e-12;
-    search.min_width = 1e-14;
     const Minimum<I, Piece, HexagonLattice<I>> minimum =
         minimise<I, Piece, HexagonLattice<I>>({hull(zero, one)}, bound_piece, value_at, known, search);
     std::vector<I> near_optimal;  // pieces that may hold a minimiser

@@ -49,6 +49,8 @@ long bits_for_digits(long digits);
 // ---- elementary functions (rigorous, outward rounded) -------------------------------
 DInterval exp(const DInterval& x);
 DInterval log(const DInterval& x);  // requires x > 0
+DInterval log1p(const DInterval& x);  // log(1 + x) with relative accuracy near 0; requires x > -1
+DInterval expm1(const DInterval& x);  // exp(x) - 1 with relative accuracy near 0
 DInterval sqrt(const DInterval& x);
 DInterval square(const DInterval& x);
 DInterval abs(const DInterval& x);
@@ -56,6 +58,8 @@ DInterval gamma(const DInterval& x);    // requires x > 0
 DInterval digamma(const DInterval& x);  // requires x > 0
 Ball exp(const Ball& x);
 Ball log(const Ball& x);
+Ball log1p(const Ball& x);
+Ball expm1(const Ball& x);
 Ball sqrt(const Ball& x);
 Ball square(const Ball& x);
 Ball abs(const Ball& x);
@@ -108,6 +112,8 @@ struct GuessField {
 inline GuessField field_of(double) { return {}; }
 inline double exp(double x) { return std::exp(x); }
 inline double log(double x) { return std::log(x); }
+inline double log1p(double x) { return std::log1p(x); }
+inline double expm1(double x) { return std::expm1(x); }
 inline double pow_nonneg(double x, double y) { return std::pow(x, y); }
 inline double pow_abs(double x, double y) { return std::pow(std::fabs(x), y); }
 inline double pow_signed(double x, double y) { return std::copysign(std::pow(std::fabs(x), y), x); }

@@ -52,6 +52,13 @@ template <class I> Jet<I> exp(const Jet<I>& a) {
     return {value, value * a.derivative};
 }
 template <class I> Jet<I> log(const Jet<I>& a) { return {log(a.value), a.derivative / a.value}; }
+template <class I> Jet<I> expm1(const Jet<I>& a) {
+    const I value = expm1(a.value);
+    return {value, (value + field_of(a.value).integer(1)) * a.derivative};
+}
+template <class I> Jet<I> log1p(const Jet<I>& a) {
+    return {log1p(a.value), a.derivative / (field_of(a.value).integer(1) + a.value)};
+}
 template <class I> Jet<I> sqrt(const Jet<I>& a) {
     const I value = sqrt(a.value);
     return {value, a.derivative / (field_of(value).integer(2) * value)};
@@ -100,6 +107,23 @@ template <class I> Jet<I> pow_abs(const Jet<I>& x, const Jet<I>& y) {
     if (!(contains_zero(y.derivative) && width_upper(y.derivative) == 0.0))
         derivative = derivative + value * log(abs(x.value)) * y.derivative;
     return {value, derivative};
+}
+
+// (1 + u)^k = exp(k log1p(u)) for u > -1, accurate where 1 + u rounds away the digits of u
+// (C0, C1 at large p). The Jet forms differentiate as pow_abs does, d = k (1 + u)^(k-1) du
+// + (1 + u)^k log1p(u) dk, so that u appears once in each factor and a wide box stays tight.
+template <class U, class K> auto pow1p(const U& u, const K& k) { return exp(k * log1p(u)); }
+template <class I> Jet<I> pow1p(const Jet<I>& u, const I& k) {
+    const I one = field_of(k).integer(1);
+    const I value = pow1p(u.value, k);
+    if (narrow_positive(one + u.value)) return {value, k * (value / (one + u.value)) * u.derivative};
+    return {value, k * pow1p(u.value, k - one) * u.derivative};
+}
+template <class I> Jet<I> pow1p(const Jet<I>& u, const Jet<I>& k) {
+    Jet<I> result = pow1p(u, k.value);
+    if (!(contains_zero(k.derivative) && width_upper(k.derivative) == 0.0))
+        result.derivative = result.derivative + result.value * log1p(u.value) * k.derivative;
+    return result;
 }
 
 // Uniform accessors so that generic code can read the value of either scalar.

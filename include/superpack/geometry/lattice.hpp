@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "superpack/arith/enclosure_json.hpp"
 #include "superpack/arith/exact.hpp"
 #include "superpack/geometry/lattice_basis.hpp"
+#include "superpack/geometry/lattice_reduction.hpp"
 #include "superpack/geometry/superball.hpp"
-#include "superpack/arith/enclosure_json.hpp"
 
 namespace superpack {
 
@@ -23,10 +24,17 @@ using Coefficients = std::array<long, 3>;
 
 template <class I>
 struct LatticeVector {
-    Coefficients coefficients;  // v = a e1 + b e2 + c e3
+    Coefficients coefficients;  // v = a e1 + b e2 + c e3 in the given basis
+    Coefficients enumerated;    // the same in the basis the enumeration ran on (the reduced one)
     std::array<I, 3> vector;
     I norm;                     // ||v||_(2p), over the whole p interval
 };
+
+// The enumeration's limits (NOTES.md 5.2): triples in the coefficient box, prod (2 N_i + 1), and
+// candidates kept (lattice vectors with every coordinate at most 2 in size, about 64 / |det|).
+// Beyond either the check is undecided, with the count in its reason.
+constexpr long enumeration_box_limit = 20000000;
+constexpr std::size_t enumeration_candidate_limit = 1000000;
 
 template <class I>
 struct LatticeCheck {
@@ -39,6 +47,10 @@ struct LatticeCheck {
     Coefficients coefficient_bound{};            // |a| <= N[0], |b| <= N[1], |c| <= N[2]
     std::vector<LatticeVector<I>> evaluated;     // every candidate whose norm was enclosed (one per +-pair)
     long excluded_by_max_norm = 0;               // candidates with a coordinate certainly > 2 in size
+    // An exact basis is enumerated in its LLL reduction: the transform and the reduced basis.
+    // Contacts, witness and near contacts are in the given basis (coefficients); the box,
+    // `enumerated` and every candidate's order are in the reduced one.
+    std::optional<BasisReduction> reduction;
     std::size_t contacts() const { return contact_vectors.size(); }
 };
 
@@ -48,8 +60,11 @@ using ContactProof = std::function<bool(const Coefficients&)>;
 
 // The core check. p may be a wide interval (an audit piece) and the basis entries wide boxes:
 // the verdict then holds for every p in the piece and every basis in the boxes. Requires
-// p >= 1/2 (throws InputError when p is not certainly >= 1/2) and a certainly nonsingular basis
-// (otherwise the verdict is undecided with that reason).
+// 1/2 <= p <= 10^15 (throws InputError when p is not certainly in that range) and a certainly
+// nonsingular basis (otherwise the verdict is undecided with that reason). The upper limit
+// (NOTES.md 5.2): a vector with a coordinate 2 and another nonzero one has norm within
+// 2 ln2 / (2p) of 2, below binary64's resolution beyond p ~ 10^14, and the 2p-th powers of
+// coordinate enclosures near 2 overflow binary64 near p ~ 10^18.
 template <class I>
 LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactProof& proved_contact);
 
@@ -66,15 +81,19 @@ Basis<typename Field::Interval> enclose_basis(const Basis<Rational>& basis, cons
     return Basis<typename Field::Interval>{{row(0), row(1), row(2)}};
 }
 
-// Check of an exact basis at an exact p >= 1/2. Contacts are decided exactly where possible:
-// by rational arithmetic when 2p is an integer, and for vectors whose nonzero coordinates share
-// one absolute value a (k of them) by the exact test k (a/2)^(2p) = 1 with 2p = m/n, i.e.
-// (a/2)^m = k^(-n). Every other candidate whose enclosure holds 2 is a near contact.
+// Check of an exact basis at an exact p >= 1/2, enumerated in its exact LLL reduction (so that a
+// skewed basis of a reasonable lattice has a small box). Contacts are decided exactly
+// (decide_norm_is_two, NOTES.md 5.3); a candidate whose enclosure holds 2 and which that test
+// does not prove to have norm 2 is a near contact. Results are reported in the given basis.
 LatticeCheck<DInterval> check_exact_lattice(const Basis<Rational>& basis, const Rational& p, const DoubleField& field);
 LatticeCheck<Ball> check_exact_lattice(const Basis<Rational>& basis, const Rational& p, const BallField& field);
 
 template <class I>
 Json lattice_check_json(const LatticeCheck<I>& check, bool with_evaluated);
 Json coefficients_json(const Coefficients& c);
+// c or -c, whichever has its first nonzero entry positive (one triple per +-pair).
+Coefficients representative(const Coefficients& c);
+// {method, transform U (integer rows), reduced_basis U B (exact rationals)}.
+Json reduction_json(const BasisReduction& reduction);
 
 }  // namespace superpack

@@ -44,9 +44,10 @@ P cubic_shift(const P& p) {
 // Newton's many evaluations in s do not repeat them.
 template <class P>
 struct CubicConstants {
-    P two_p;   // 2p
-    P shift;   // t = 2^(-1/(2p))
-    P corner;  // 2^(-2p)
+    P two_p;    // 2p
+    P shift;    // t = 2^(-1/(2p))
+    P deficit;  // 1 - t = -expm1(-ln2/(2p)), to full relative precision also at large p
+    P corner;   // 2^(-2p)
 };
 
 template <class P>
@@ -54,17 +55,22 @@ CubicConstants<P> cubic_constants(const P& p) {
     const auto field = scalar_field(p);
     const P two_p = field.integer(2) * p;
     const auto log_two = log(field.integer(2));
-    return {two_p, cubic_shift(two_p, log_two), exp(-two_p * log_two)};
+    return {two_p, cubic_shift(two_p, log_two), -expm1(-log_two / two_p), exp(-two_p * log_two)};
 }
 
 // C0 (Eq. 2): (s + t)^(2p) + s^(2p) + 2^(-2p) - 1 = 0, s the smallest positive root.
 // C1 (Eq. 9): (s + t)^(2p) + 2 s^(2p) - 1 = 0.
+// (s + t)^(2p) is evaluated as pow1p(s - (1 - t), 2p) = exp(2p log1p(s - (1 - t))), the same number for s > -t. For
+// large p, s + t -> 1 while s ~ ln2/(2p): s + t rounded to the working precision would keep s
+// only to 2p units in its last place, while s - (1 - t) has an absolute error of a few units of
+// s, which 2p log1p turns into a few units of 1 (NOTES.md section 4, "Large p"). s and p each
+// appear once inside log1p, as in s + t, so wide boxes of an audit piece stay tight.
 template <class S, class P>
 auto cubic_equation(Family family, const S& s, const CubicConstants<P>& c) {
     const auto field = scalar_field(c.two_p);
+    const auto shifted = pow1p(s - c.deficit, c.two_p);
     // |s| rather than s: identical for s >= 0, and a box [0, b] made by a ball backend may
     // reach a rounding error below 0 (then the root-free claim covers a slightly larger set).
-    const auto shifted = pow_abs(s + c.shift, c.two_p);
     const auto own = pow_abs(s, c.two_p);
     if (family == Family::C0) return shifted + own + c.corner - field.integer(1);
     return shifted + field.integer(2) * own - field.integer(1);

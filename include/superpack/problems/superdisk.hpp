@@ -48,6 +48,35 @@ T hexagon_determinant(const T& a, const T& b, const T& t, const Q& q) {
     return x * b - t * x * a;
 }
 
+// y1 = (1 - 2^-q)^(1/q), as exp(log1p(-2^-q) / q): at t = 0 the contact system reads
+// |a|^q + |b|^q = 1 = |a - 1|^q + |b|^q, so |a| = |a - 1|, a = 1/2, and b = y1 > 0 (det > 0).
+// This is v(0) (Lambda1) in closed form; Krawczyk cannot prove it for large q, where the
+// system's dependence on a is of size 2^-q (NOTES.md 7.3).
+template <class Q>
+Q axis_height(const Q& q) {
+    const auto field = field_of(q);
+    return exp(log1p(-exp(-q * log(field.integer(2)))) / q);
+}
+
+// A lower bound of D(t) = det(u(t), v) over a piece T of [0, 1] (q > 1) for every solution v =
+// (a, b) of the contact system with det(u, v) > 0, with no enclosure of v (NOTES.md 7.4, "A
+// priori bound"): b >= y1, and a <= 0 or 0 <= a <= min(x/2, x - (1 - 2^-q - (y1 - t x)^q)^(1/q)),
+// so D = x b - t x a >= x y1 - t x max(0, that). It is what the branch and bound uses where
+// Krawczyk cannot follow v(t): for large q, v leaves the axis within t ~ 2^-q and the contact
+// system has condition ~1/(q t) beyond, while D there is far above its minimum.
+template <class Q>
+Q a_priori_lower_bound(const Q& t, const Q& q) {
+    const auto field = field_of(q);
+    const Q zero = field.integer(0), one = field.integer(1), two = field.integer(2);
+    const Q x = boundary_x(t, q), height = axis_height(q);
+    const Q gap = one - exp(-q * log(two)) - pow_abs(height - t * x, q);
+    const Q root = certainly_positive(gap) ? pow_nonneg(lower_point(gap), one / q) : zero;
+    // Both are upper bounds of a >= 0; which one is used is a choice, not a claim.
+    const Q half = x / two, complement = x - root;
+    const Q a = mid_double(upper_point(half)) < mid_double(upper_point(complement)) ? half : complement;
+    return lower_point(x * height - t * x * hull(zero, upper_point(a)));
+}
+
 template <class I> I lift_like(const I& x, const I&) { return x; }
 template <class I> Jet<I> lift_like(const I& x, const Jet<I>&) { return constant(x); }
 
@@ -69,7 +98,8 @@ enum class PieceVerdict { discarded, monotone, bounded, undecided };
 const char* to_string(PieceVerdict verdict);
 
 // How a piece's lower bound of D was obtained (a certificate replays exactly that method).
-enum class LowerBoundMethod { naive, naive_and_mean_value, left_end, right_end };
+// `a_priori`: a piece without a Krawczyk proof, bounded by a_priori_lower_bound.
+enum class LowerBoundMethod { naive, naive_and_mean_value, left_end, right_end, a_priori };
 const char* to_string(LowerBoundMethod method);
 
 // One piece of the parameter range [0, 1] and what is proved about D on it.
@@ -126,6 +156,11 @@ struct SuperdiskOptions {
     double relative_tolerance = 4e-10;  // stopping rule of the branch and bound (a guess)
     std::size_t max_pieces = 1000;
 };
+
+// The supported range is p <= 10^6 (throws InputError beyond, NOTES.md 7.4 "Large p"): near its
+// minimum D differs from 1 by about (ln 2)^2 / (2p)^2, 1e-13 at p = 10^6; beyond, binary64 cannot
+// resolve it (undecided at p = 10^7) and Arb's branch and bound took over five minutes at 10^8.
+extern const Rational superdisk_largest_p;
 
 SuperdiskReport<DInterval> analyse_superdisk(const Rational& p, const DoubleField& field,
                                              const SuperdiskOptions& options = {});
