@@ -25,15 +25,6 @@ std::array<Rational, 3> exact_vector(const Basis<Rational>& basis, const Coeffic
     return v;
 }
 
-// How an exact contact is decided (NOTES.md 5.3), in words for the reader of the file.
-std::string contact_reason(const Rational& p) {
-    Rational two_p = 2 * p;
-    two_p.canonicalize();
-    if (two_p.get_den() == 1)
-        return "2p = " + two_p.get_num().get_str() + " is an integer: sum |v_i|^(2p) = 2^(2p) in rational arithmetic";
-    return "the k nonzero coordinates share one absolute value a, and (a/2)^m k^n = 1 with 2p = m/n, exactly";
-}
-
 }  // namespace
 
 template <class Field>
@@ -72,37 +63,27 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
         if (c[0] < 0 || (c[0] == 0 && (c[1] < 0 || (c[1] == 0 && c[2] < 0)))) continue;  // one per +-pair
         Json vector = Json::array();
         for (const Rational& x : exact_vector(basis, c)) vector.push_back(rational_text(x));
-        contacts.push_back(Json{{"coefficients", coefficients_json(c)}, {"vector", vector}, {"decided", contact_reason(p)}});
+        contacts.push_back(Json{{"coefficients", coefficients_json(c)}, {"vector", vector}});
     }
     Json contact_vectors = Json::array();
     for (const auto& c : check.contact_vectors) contact_vectors.push_back(coefficients_json(c));
 
-    std::string text = "The lattice with basis rows " + basis_json.dump() + " at p = " + rational_text(p);
     Json data{{"basis", basis_json}, {"p", rational_text(p)}, {"packing", packing}};
-    if (packing) {
-        text += " is a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1 with " +
-                std::to_string(check.contacts()) + " contacts (every nonzero lattice vector has 2p-norm >= 2, " +
-                "with equality exactly for the contact vectors)";
-        data["contacts"] = check.contacts();
-        data["contact_vectors"] = contact_vectors;
-    } else {
-        const Coefficients& w = check.witness->coefficients;
-        text += " is not a packing: the lattice vector with coefficients (" + std::to_string(w[0]) + ", " +
-                std::to_string(w[1]) + ", " + std::to_string(w[2]) + ") has 2p-norm < 2";
-        data["witness"] = Json{{"coefficients", coefficients_json(w)}, {"norm", exact_interval_json(check.witness->norm)}};
-    }
-    Json claim{{"kind", "lattice-check"}, {"text", text}, {"data", data}};
-    Json inputs{{"basis", basis_json}, {"p", rational_text(p)}, {"p_decimal", decimal_or_fraction_text(p)}};
     Json proof{{"kind", "enumeration"},
-               {"text", "by Cramer and Hoelder every v = a e1 + b e2 + c e3 with ||v||_(2p) <= 2 has |a_i| <= "
-                        "floor(2 ||e_j x e_k||_1 / |det|); every triple in that box (one per +-pair) is listed unless a "
-                        "coordinate exceeds 2 in size, with its norm enclosure: above 2, below 2, or a contact decided exactly"},
                {"coefficient_bound", coefficients_json(check.coefficient_bound)},
                {"bound_data", Json{{"determinant", exact_interval_json(abs(determinant(enclosed)))},
                                    {"cross_norms", cross_norms}}},
-               {"excluded_by_max_norm", check.excluded_by_max_norm},
-               {"candidates", candidates},
-               {"contacts", contacts}};
+               {"candidates", candidates}};
+    if (packing) {
+        data["contacts"] = check.contacts();
+        data["contact_vectors"] = contact_vectors;
+        proof["contacts"] = contacts;  // each decided exactly, with its exact vector
+    } else {
+        const Coefficients& w = check.witness->coefficients;
+        data["witness"] = Json{{"coefficients", coefficients_json(w)}, {"norm", exact_interval_json(check.witness->norm)}};
+    }
+    Json claim{{"kind", "lattice-check"}, {"data", data}};
+    Json inputs{{"basis", basis_json}, {"p", rational_text(p)}, {"p_decimal", decimal_or_fraction_text(p)}};
     return certificate_document(certificate_head("check-lattice", field, digits), claim, inputs, proof);
 }
 

@@ -17,6 +17,8 @@ int printed_digits(long bits);
 
 DecimalEnclosure to_decimal(const DInterval& x, int digits);
 DecimalEnclosure to_decimal(const Ball& x, int digits);
+// Two exact MPFR ends, the lower rounded down and the upper up.
+DecimalEnclosure to_decimal(const mpfr_t lo, const mpfr_t hi, int digits);
 // Fixed-point form with `decimals` digits after the point, same outward rounding (tables).
 DecimalEnclosure to_fixed(const DInterval& x, int decimals);
 DecimalEnclosure to_fixed(const Ball& x, int decimals);

@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "common.hpp"
+#include "superpack/certificate.hpp"
 #include "superpack/version.hpp"
 
 int main(int argc, char** argv) {
@@ -28,6 +29,9 @@ int main(int argc, char** argv) {
     } catch (const superpack::InputError& error) {
         std::cerr << "superpack: error: " << error.what() << "\n";
         return exit_usage;
+    } catch (const superpack::CertificateRejected& error) {
+        std::cerr << "superpack: error: no certificate written: " << error.what() << "\n";
+        return exit_invalid;
     } catch (const Failure& failure) {
         std::cerr << "superpack: " << failure.what() << "\n";
         return failure.code;

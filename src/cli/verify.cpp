@@ -21,7 +21,8 @@ int run(const VerifyOptions& options) {
         document["file"] = options.file;
         document["verdict"] = to_string(report.verdict);
         document["claim_kind"] = report.claim_kind;
-        document["claim"] = report.claim_text;
+        // The checker's sentence, rendered from what it verified (never the file's words).
+        document["claim"] = report.rendered_claim.empty() ? Json(nullptr) : Json(report.rendered_claim);
         document["steps"] = report.steps;
         document["checker_bits"] = report.precision;
         if (report.verdict != Verdict::valid) {
@@ -30,7 +31,7 @@ int run(const VerifyOptions& options) {
         }
         std::cout << document.dump(2) << "\n";
     } else if (report.verdict == Verdict::valid) {
-        std::cout << "valid: " << report.claim_text << "\n  (" << report.steps << " steps checked with MPFI at "
+        std::cout << "valid: " << report.rendered_claim << "\n  (" << report.steps << " steps checked with MPFI at "
                   << report.precision << " bits)\n";
     }
     const std::string where = report.path.empty() ? "" : " at " + report.path;
