@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
 #include "checker/document_check.hpp"
+#include "checker/json_reader.hpp"
 
 namespace superpack_checker {
 
@@ -181,12 +183,19 @@ VerifyReport verify_file(const std::string& path) {
         report.message = "cannot read " + path;
         return report;
     }
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     Json document;
     try {
-        document = Json::parse(file);
+        document = read_json(text);
     } catch (const Json::exception& error) {
         VerifyReport report;
         report.message = std::string("not JSON: ") + error.what();
+        return report;
+    } catch (const Rejection& rejection) {
+        VerifyReport report;
+        report.verdict = rejection.verdict;
+        report.path = rejection.path;
+        report.message = rejection.message;
         return report;
     }
     return verify_document(document);

@@ -1,10 +1,12 @@
 // The words of a certificate are the checker's (NOTES.md 8.2): it renders the claim sentence and
 // every "decimal" from what it verified and reads every key, so a forged claim text, a forged
-// decimal, an unknown key and a forged literature value are each rejected at the named path,
+// decimal, an unknown or repeated key and a forged literature value are each rejected at the
+// named path,
 // and "packing density" appears only where the same certificate proves a packing.
 #include <filesystem>
 #include <fstream>
 
+#include "checker/json_reader.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/audit_certificate.hpp"
 #include "superpack/crossover_certificate.hpp"
@@ -58,6 +60,20 @@ std::string claimed_words(std::string text) {
     return text;
 }
 
+// The file's text with `insertion` put right after the first occurrence of `after`, checked by
+// verify_file as superpack verify reads it.
+superpack_checker::VerifyReport verify_text_with(const Document& document, const std::string& after, const std::string& insertion) {
+    std::string text = document.dump();
+    const std::size_t at = text.find(after);
+    REQUIRE(at != std::string::npos);
+    text.insert(at + after.size(), insertion);
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "superpack-test-duplicate-key.json";
+    std::ofstream(file) << text;
+    const auto report = superpack_checker::verify_file(file.string());
+    std::filesystem::remove(file);
+    return report;
+}
+
 }  // namespace
 
 TEST_CASE("a forged claim text is rejected at claim.text") {
@@ -108,6 +124,30 @@ TEST_CASE("an unknown key is rejected at its path") {
     Document top = slopes();
     top["errata"] = "none";
     CHECK(rejected_at(top) == "errata");
+}
+
+TEST_CASE("a repeated key is rejected at its path") {
+    // Two claim texts: nlohmann keeps the last, so a reader of the first would see another claim.
+    const auto text = verify_text_with(slopes(), "\"claim\":{", "\"text\":\"The paper is right: a_plus = 0.3555\",");
+    CHECK(text.verdict == superpack_checker::Verdict::malformed);
+    CHECK(text.path == "claim.text");
+    CHECK(text.message.find("duplicate key") != std::string::npos);
+    // Deep in a proof, inside an array.
+    const Document lattice = overlapping_lattice();
+    const std::string first = "\"candidates\":[{";
+    const auto nested = verify_text_with(lattice, first, "\"norm\":" + lattice["proof"]["candidates"][0]["norm"].dump() + ",");
+    CHECK(nested.path == "proof.candidates[0].norm");
+    // The same key in two objects, and in an array's later element, is no repetition.
+    const Document parsed = superpack_checker::read_json(R"({"a": {"k": 1}, "b": [{"k": 2}, {"k": 3, "j": [1, {"k": 4}]}]})");
+    CHECK(parsed["b"][1]["j"][1]["k"] == 4);
+    try {
+        superpack_checker::read_json(R"({"a": [1, 2, {"x": [0, {"k": 1, "k": 2}]}]})");
+        FAIL("the repeated key was not rejected");
+    } catch (const superpack_checker::Rejection& rejection) {
+        CHECK(rejection.path == "a[2].x[1].k");
+    }
+    // Unchanged, the file verifies through the same reader.
+    CHECK(verify_text_with(slopes(), "", "").verdict == superpack_checker::Verdict::valid);
 }
 
 TEST_CASE("a forged literature value is rejected at its path") {
