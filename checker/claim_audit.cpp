@@ -15,9 +15,15 @@
 //               Jacobian nonsingular), so the boxes follow one branch. A piece without a box
 //               breaks the chain: no later O1 piece can be decided.
 // then the verdict with the checker's own enumeration (family_verdict.hpp).
+//
+// Keys read: claim.data {family, lattice ("published"), range {lo, hi}, pieces [{p {lo, hi},
+// verdict, contacts, contact_vectors | witness | at, witness}]}; inputs {family, range};
+// proof {kind, pieces [{parameters, lattice}]} (both null where nothing is proved).
 #include <optional>
 
 #include "checker/family_verdict.hpp"
+#include "checker/literature.hpp"
+#include "checker/render.hpp"
 
 namespace superpack_checker {
 
@@ -96,7 +102,20 @@ std::optional<O1Piece> replay_o1_piece(Context& context, const Json& node, const
     return O1Piece{box, replay.root};
 }
 
-void check_audit(const Json& claim, Context& context) {
+// A run of consecutive pieces with the same verdict words, for the sentence.
+struct MergedRange {
+    mpq_class lo, hi;
+    std::string words;
+};
+
+void merge(std::vector<MergedRange>& ranges, const Piece& piece, const std::string& words) {
+    if (!ranges.empty() && ranges.back().words == words && ranges.back().hi == piece.lo)
+        ranges.back().hi = piece.hi;
+    else
+        ranges.push_back({piece.lo, piece.hi, words});
+}
+
+std::string check_audit(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
     const Json& inputs = context.member(document, "inputs", "");
@@ -108,6 +127,8 @@ void check_audit(const Json& claim, Context& context) {
     context.require(input_range.lo == range.lo && input_range.hi == range.hi, "inputs.range",
                     "the input range differs from the claim's");
     require_family_domain(context, family, range.lo, range.hi, "inputs.range");
+    if (context.string_at(data, "lattice", "claim.data") != "published")
+        context.malformed("claim.data.lattice", "expected \"published\" (the lattice of the paper)");
     if (context.string_at(proof, "kind", "proof") != "audit") context.malformed("proof.kind", "expected \"audit\"");
     const Json& pieces = context.member(data, "pieces", "claim.data");
     const Json& proofs = context.member(proof, "pieces", "proof");
@@ -117,6 +138,9 @@ void check_audit(const Json& claim, Context& context) {
     const FamilyForms forms = family_forms(family);
 
     Chain chain;
+    std::vector<MergedRange> merged;
+    bool refutes_o1 = false;  // an O1 piece overlapping for every p, below p*_o
+    const Real crossover = log(integer(3, precision)) / log(integer(4, precision));
     mpq_class reached = range.lo;  // the pieces so far cover [range.lo, reached]
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         const std::string claim_path = "claim.data.pieces[" + std::to_string(k) + "]";
@@ -128,7 +152,6 @@ void check_audit(const Json& claim, Context& context) {
         const Real p = hull(rational(piece.lo, precision), rational(piece.hi, precision));
         const std::string verdict = context.string_at(pieces[k], "verdict", claim_path);
         const bool decided = verdict != "undecided";
-        if (!decided) context.string_at(pieces[k], "reason", claim_path);  // an undecided piece says why
         // overlapping_at_point: the claim is about the one point p = at of the piece.
         const bool at_point = verdict == "overlapping_at_point";
         std::optional<mpq_class> at;
@@ -139,6 +162,14 @@ void check_audit(const Json& claim, Context& context) {
         const Real p_claimed = at ? rational(*at, precision) : p;
         const std::string parameters_path = proof_path + ".parameters";
         const Json& parameters = context.member(proofs[k], "parameters", proof_path);
+        const Json& lattice = context.member(proofs[k], "lattice", proof_path);
+        if (!decided) {
+            merge(merged, piece, "undecided");
+            // Nothing is proved here: no lattice proof (O1 keeps its box for the chain, below).
+            if (!lattice.is_null()) context.malformed(proof_path + ".lattice", "an undecided piece proves nothing: expected null");
+            if (family != "O1" && !parameters.is_null())
+                context.malformed(parameters_path, "an undecided piece proves nothing: expected null");
+        }
         NamedReals symbols;
         if (family == "O1") {
             const auto replayed = replay_o1_piece(context, parameters, parameters_path, piece, p, chain, k == 0);
@@ -152,12 +183,40 @@ void check_audit(const Json& claim, Context& context) {
             // The piece's proof holds for every p of the piece, so also at the point.
             symbols = replay_family_parameters(context, family, parameters, parameters_path, p_claimed, claim_path + ".p").symbols;
         }
-        Json stated = pieces[k];
-        if (at_point) stated["verdict"] = "overlapping";  // at the point p = at
-        check_family_verdict(context, forms, symbols, p_claimed, stated, claim_path, context.member(proofs[k], "lattice", proof_path),
-                             proof_path + ".lattice");
+        const FamilyVerdict result = check_family_verdict(context, forms, symbols, p_claimed, at_point ? "overlapping" : verdict,
+                                                          pieces[k], claim_path, lattice, proof_path + ".lattice");
+        if (at_point)
+            merge(merged, piece, "undecided, but overlapping at one certified point per piece (witness " + triple_text(result.witness) + ")");
+        else if (result.packing)
+            merge(merged, piece, "packing with " + std::to_string(result.contacts) + " contacts");
+        else
+            merge(merged, piece, "overlapping (witness " + triple_text(result.witness) + ")");
+        refutes_o1 = refutes_o1 || (family == "O1" && !result.packing && !at_point &&
+                                    less(rational(piece.hi, precision), crossover));
     }
     context.require(reached == range.hi, "claim.data.pieces", "the pieces stop before the end of the range");
+
+    // The sentence, from the verdicts verified above.
+    const std::string lattice_text =
+        family == "O1" ? std::string("the O1 lattice of ") + paper_citation +
+                             " (Sec. IV.B: basis Eq. (15), (q, s) on the root branch of Eq. (16) through Minkowski's (1/6, 2/3) "
+                             "at p = 1/2)"
+                       : lattice_words(family);
+    std::string text = "For every p in each piece [lo, hi] of claim.data.pieces (exact rational ends; the pieces cover [" +
+                       rational_words(range.lo) + ", " + rational_words(range.hi) + "] without gaps), " + lattice_text +
+                       " has the verdict stated for the piece: a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1 "
+                       "with the stated contacts, or not a packing (the witness vector has 2p-norm < 2). A piece marked "
+                       "overlapping_at_point is not a packing at the one point p = at of the piece (witness) and proves "
+                       "nothing about its other p. Pieces marked undecided prove nothing.";
+    if (family == "O1")
+        text += " The branch is followed by continuation: a Krawczyk box per piece, each holding the root of the next "
+                "piece at their shared end; a piece without a box breaks the chain.";
+    text += " The verdicts, merged:";
+    for (const MergedRange& entry : merged)
+        text += " [" + rational_words(entry.lo) + ", " + rational_words(entry.hi) + "] " + entry.words + ";";
+    text.back() = '.';
+    if (refutes_o1) text += refutation_words(o1_packs);
+    return text;
 }
 
 const ClaimKindRegistration registration("audit", check_audit);

@@ -11,10 +11,16 @@
 // the sign the previous piece proved at its right end); the mean value form; else it bisects the
 // piece itself. The one root piece is proved by interval Newton on h in p. h(1) = 0 is an exact
 // computation in Q(sqrt2) (both cubic lattices are FCC at p = 1).
+//
+// Keys read: claim.data {difference, from, to, p, phi, sign_left, sign_right, densest_left,
+// densest_right}; inputs {from, to}; proof {kind, at_start {kind, p, s_C0 {a, b}, s_C1 {a, b}},
+// pieces [{p, claim, s_C0 {box}, s_C1 {box}, root (the root piece)}]}.
 #include <cstdlib>
 #include <iostream>
 
 #include "checker/equations_crossover.hpp"
+#include "checker/literature.hpp"
+#include "checker/render.hpp"
 #include "checker/replay.hpp"
 #include "checker/smallest_root.hpp"
 
@@ -63,6 +69,7 @@ Surd read_surd(Context& context, const Json& node, const std::string& key, const
 // (where f is increasing, so they are the smallest positive roots), and give h = 0.
 void check_sphere_point(Context& context, const Json& node, const std::string& path) {
     context.current_step = path;
+    if (context.string_at(node, "kind", path) != "sphere-point") context.malformed(path + ".kind", "expected sphere-point");
     context.require(context.rational_at(node, "p", path) == 1, path + ".p", "the lemma is at p = 1");
     const Surd s0 = read_surd(context, node, "s_C0", path), s1 = read_surd(context, node, "s_C1", path);
     const Surd one{1, 0};
@@ -85,7 +92,7 @@ int parse_sign(Context& context, const std::string& text, const std::string& pat
     return 0;
 }
 
-void check_cubic_crossover(const Json& claim, Context& context) {
+std::string check_cubic_crossover(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
     const Json& inputs = context.member(document, "inputs", "");
@@ -93,6 +100,8 @@ void check_cubic_crossover(const Json& claim, Context& context) {
     context.require(context.rational_at(data, "from", "claim.data") == from, "claim.data.from", "differs from the input");
     context.require(context.rational_at(data, "to", "claim.data") == to, "claim.data.to", "differs from the input");
     context.require(from == 1 && to > 1, "inputs.from", "the claim starts at the sphere point p = 1");
+    if (context.string_at(data, "difference", "claim.data") != "phi_C1(p) - phi_C0(p)")
+        context.malformed("claim.data.difference", "expected \"phi_C1(p) - phi_C0(p)\"");
     const mpfr_prec_t precision = context.precision();
     const std::string identity = determinant_identity_failure(precision);
     context.require(identity.empty(), "claim.data", "closed-form determinant disagrees with the basis: " + identity);
@@ -175,7 +184,7 @@ void check_cubic_crossover(const Json& claim, Context& context) {
     context.require(densest_left == (sign_left < 0 ? "C0" : "C1"), "claim.data.densest_left", "g < 0 means C0 is denser");
     context.require(densest_right == (sign_right < 0 ? "C0" : "C1"), "claim.data.densest_right", "g > 0 means C1 is denser");
 
-    check_encloses(context, context.member(data, "p", "claim.data"), "claim.data.p", root);
+    const Real stated_p = proved_enclosure(context, context.member(data, "p", "claim.data"), "claim.data.p", root);
     // phi*_c from both families at the root: each encloses it, so their meet does.
     const CubicEquation c0{false, root}, c1{true, root};
     const ValueAndSlope t = halving_shift(root), volume = superball_volume_with_slope(root);
@@ -186,11 +195,19 @@ void check_cubic_crossover(const Json& claim, Context& context) {
     const Real phi1 = volume.value / cubic_abs_determinant(true, s1, t).value;
     Real phi(precision);
     context.require(intersect(phi, phi0, phi1), "claim.data.phi", "phi_C0 and phi_C1 at p*_c are disjoint");
-    check_encloses(context, context.member(data, "phi", "claim.data"), "claim.data.phi", phi);
+    const Real stated_phi = proved_enclosure(context, context.member(data, "phi", "claim.data"), "claim.data.phi", phi);
     // For measurements (NOTES.md 8.5): how often the checker had to cut a stored piece, and its own p*_c.
     if (std::getenv("SUPERPACK_CHECKER_TRACE"))
         std::cerr << "cubic-crossover: checker bisections " << bisections << ", p*_c in " << text(root) << " width " << width(root)
                   << "\n";
+    auto larger = [](int sign) { return sign < 0 ? "phi_C0 > phi_C1" : "phi_C1 > phi_C0"; };
+    return "g(p) = phi_C1(p) - phi_C0(p), with phi = V_sb(p) / |det B| of the C1 and C0 lattices of " + std::string(paper_citation) +
+           " (Secs. III.B and III.A), has exactly one zero p*_c in (1, " + exact_text(to) + "], p*_c in " +
+           enclosure_words(stated_p) + " (claim.data.p); g is " + (sign_left < 0 ? "< 0" : "> 0") + " on (1, p*_c) (" +
+           larger(sign_left) + ") and " + (sign_right < 0 ? "< 0" : "> 0") + " on (p*_c, " + exact_text(to) + "] (" +
+           larger(sign_right) + "); phi*_c = phi_C0(p*_c) = phi_C1(p*_c) in " + enclosure_words(stated_phi) +
+           " (claim.data.phi). The paper's " + printed_value_words(Printed::p_star_c, stated_p) + "; its " +
+           printed_value_words(Printed::phi_star_c, stated_phi) + ".";
 }
 
 const ClaimKindRegistration registration("cubic-crossover", check_cubic_crossover);

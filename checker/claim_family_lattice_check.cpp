@@ -5,13 +5,18 @@
 // replay_family_parameters) and the enumeration, which the checker redoes itself over its own
 // interval basis (family_verdict.hpp). Contacts are decided by the family's unit equations
 // (equations_audit.hpp), never by evaluating a norm that is exactly 2.
+//
+// Keys read: claim.data {family, p, verdict, contacts, contact_vectors | witness}; inputs
+// {family, p, p_decimal}; proof {kind, parameters, lattice}.
 #include "checker/family_verdict.hpp"
+#include "checker/literature.hpp"
+#include "checker/render.hpp"
 
 namespace superpack_checker {
 
 namespace {
 
-void check_family_lattice_check(const Json& claim, Context& context) {
+std::string check_family_lattice_check(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
     const Json& inputs = context.member(document, "inputs", "");
@@ -25,8 +30,14 @@ void check_family_lattice_check(const Json& claim, Context& context) {
     const Real p_interval = rational(p, context.precision());
     const FamilyParameters replayed = replay_family_parameters(
         context, family, context.member(proof, "parameters", "proof"), "proof.parameters", p_interval, "inputs.p");
-    check_family_verdict(context, family_forms(family), replayed.symbols, p_interval, data, "claim.data",
-                         context.member(proof, "lattice", "proof"), "proof.lattice");
+    const FamilyVerdict verdict =
+        check_family_verdict(context, family_forms(family), replayed.symbols, p_interval, context.string_at(data, "verdict", "claim.data"),
+                             data, "claim.data", context.member(proof, "lattice", "proof"), "proof.lattice");
+    check_p_decimal(context, inputs, p);
+    // O1 overlapping on (1/2, p*_o) (p < p*_o is part of the parameter proof) is the erratum.
+    const bool refutes_o1 = family == "O1" && !verdict.packing && p > mpq_class(1, 2);
+    return "At p = " + exact_text(p) + ", " + lattice_words(family) + " " + verdict_words(verdict) + "." +
+           (refutes_o1 ? refutation_words(o1_packs) : "");
 }
 
 const ClaimKindRegistration registration("family-lattice-check", check_family_lattice_check);

@@ -8,13 +8,19 @@
 // triple of that box itself, and for each one whose exact coordinates are all at most 2 in size
 // (a larger coordinate already gives norm > 2) requires it to be listed, recomputes its norm
 // enclosure in MPFI, and decides it: certainly > 2, certainly < 2, or norm exactly 2 by an
-// exact rational test. Anything else is a rejection.
+// exact rational test. Anything else is a rejection. Listed candidates outside its box (the
+// producer's bound may be larger) are decided the same way.
+//
+// Keys read: claim.data {basis, p, packing, contacts, contact_vectors | witness}; inputs {basis,
+// p, p_decimal}; proof {kind, coefficient_bound, bound_data {determinant, cross_norms},
+// candidates [{coefficients, norm, status}], contacts [{coefficients, vector}] (a packing only)}.
 #include <map>
 #include <set>
 #include <stdexcept>
 
 #include "checker/equations.hpp"
 #include "checker/equations_lattice.hpp"
+#include "checker/render.hpp"
 #include "checker/replay.hpp"
 #include "checker/triple.hpp"
 
@@ -78,7 +84,7 @@ Reduction replay_reduction(Context& context, const Json& proof, const Matrix& ba
     for (int i = 0; i < 3; ++i) reduction.transform[i][i] = 1;
     if (!proof.contains("reduction")) return reduction;
     const std::string path = "proof.reduction";
-    const Json& node = proof["reduction"];
+    const Json& node = context.member(proof, "reduction", "proof");
     const Json& transform = context.member(node, "transform", path);
     if (!transform.is_array() || transform.size() != 3) context.malformed(path + ".transform", "expected three rows");
     for (int i = 0; i < 3; ++i) {
@@ -103,7 +109,15 @@ Real norm_enclosure(const Vector& v, const Real& two_p, mpfr_prec_t precision) {
     return lattice_norm({rational(v[0], precision), rational(v[1], precision), rational(v[2], precision)}, two_p);
 }
 
-void check_lattice_check(const Json& claim, Context& context) {
+std::string basis_words(const Matrix& basis) {
+    std::string words;
+    for (int i = 0; i < 3; ++i)
+        words += std::string(i ? ", " : "") + "(" + exact_text(basis[i][0]) + ", " + exact_text(basis[i][1]) + ", " +
+                 exact_text(basis[i][2]) + ")";
+    return words;
+}
+
+std::string check_lattice_check(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
     const Json& inputs = context.member(document, "inputs", "");
@@ -170,6 +184,38 @@ void check_lattice_check(const Json& claim, Context& context) {
     const Real two_p = rational(two_p_exact, precision);
     std::set<Triple> contacts;
     long below = 0;
+    // Decides one listed candidate: its norm enclosure must contain the checker's, and its
+    // status must be the checker's (or undecided beside a witness).
+    auto decide = [&](const Triple& t, std::size_t index) {
+        const Vector v = combination(rows, t);
+        const std::string path = "proof.candidates[" + std::to_string(index) + "]";
+        context.current_step = path;
+        const Json& entry = candidates[index];
+        const Real norm = norm_enclosure(v, two_p, precision);
+        check_encloses(context, context.member(entry, "norm", path), path + ".norm", norm);
+        std::string status;
+        if (less(norm, two)) {
+            status = "below";
+            ++below;
+            context.require(!packing, path, "the vector " + triple_text(t) + " has norm " + text(norm) +
+                                                " < 2: the lattice is not a packing");
+        } else if (less(two, norm)) {
+            status = "above";
+        } else if (norm_is_exactly_two(v, two_p_exact)) {
+            status = "contact";
+            contacts.insert(t);
+        } else {
+            // Harmless beside a witness; fatal to a packing claim.
+            context.require(!packing, path, "the norm enclosure " + text(norm) + " of " + triple_text(t) +
+                                                " holds 2 and no exact test proves the norm equal to 2");
+            status = "undecided";
+        }
+        // The producer's coarser arithmetic may leave undecided what the checker decides.
+        const std::string stated_status = context.string_at(entry, "status", path);
+        context.require(stated_status == status || (!packing && stated_status == "undecided"), path + ".status",
+                        "the stated status \"" + stated_status + "\" differs from the checker's \"" + status + "\"");
+    };
+    std::set<Triple> in_box;
     for (long a = 0; a <= bound[0]; ++a)
         for (long b = (a == 0 ? 0 : -bound[1]); b <= bound[1]; ++b)
             for (long c = (a == 0 && b == 0 ? 1 : -bound[2]); c <= bound[2]; ++c) {
@@ -179,33 +225,12 @@ void check_lattice_check(const Json& claim, Context& context) {
                 const auto found = listed.find(t);
                 context.require(found != listed.end(), "proof.candidates",
                                 "the candidate " + triple_text(t) + " (all coordinates at most 2 in size) is missing");
-                const std::string path = "proof.candidates[" + std::to_string(found->second) + "]";
-                context.current_step = path;
-                const Json& entry = candidates[found->second];
-                const Real norm = norm_enclosure(v, two_p, precision);
-                check_encloses(context, context.member(entry, "norm", path), path + ".norm", norm);
-                std::string status;
-                if (less(norm, two)) {
-                    status = "below";
-                    ++below;
-                    context.require(!packing, path, "the vector " + triple_text(t) + " has norm " + text(norm) +
-                                                        " < 2: the lattice is not a packing");
-                } else if (less(two, norm)) {
-                    status = "above";
-                } else if (norm_is_exactly_two(v, two_p_exact)) {
-                    status = "contact";
-                    contacts.insert(t);
-                } else {
-                    // Harmless beside a witness; fatal to a packing claim.
-                    context.require(!packing, path, "the norm enclosure " + text(norm) + " of " + triple_text(t) +
-                                                        " holds 2 and no exact test proves the norm equal to 2");
-                    status = "undecided";
-                }
-                // The producer's coarser arithmetic may leave undecided what the checker decides.
-                const std::string stated_status = context.string_at(entry, "status", path);
-                context.require(stated_status == status || (!packing && stated_status == "undecided"), path + ".status",
-                                "the stated status \"" + stated_status + "\" differs from the checker's \"" + status + "\"");
+                decide(t, found->second);
+                in_box.insert(t);
             }
+    for (const auto& [t, index] : listed)
+        if (!in_box.count(t)) decide(t, index);
+    check_p_decimal(context, inputs, p);  // after the proof, which names a wrong p first
 
     context.current_step = "claim.data";
     if (packing) {
@@ -247,6 +272,11 @@ void check_lattice_check(const Json& claim, Context& context) {
             listed_contacts.insert(t);
         }
         context.require(listed_contacts == contacts, "proof.contacts", "the decided contacts differ from the checker's");
+        // The sentence: the contacts verified, and |det B| exactly.
+        return "The lattice with basis rows " + basis_words(basis) + " at p = " + exact_text(p) +
+               " is a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1 with " + std::to_string(count.get<long>()) +
+               " contacts (every nonzero lattice vector has 2p-norm >= 2, with equality exactly for the contact vectors), " +
+               "of packing density V_sb(p) / |det B| with |det B| = " + exact_text(abs(det)) + ".";
     } else {
         context.require(below > 0, "claim.data.packing", "no candidate has norm < 2, yet the claim says not a packing");
         const Json& witness = context.member(data, "witness", "claim.data");
@@ -254,8 +284,12 @@ void check_lattice_check(const Json& claim, Context& context) {
                                      "claim.data.witness.coefficients");
         context.require(t != Triple{0, 0, 0}, "claim.data.witness", "the zero vector is no witness");
         const Real norm = norm_enclosure(combination(basis, t), two_p, precision);
-        check_encloses(context, context.member(witness, "norm", "claim.data.witness"), "claim.data.witness.norm", norm);
+        const Real stated = proved_enclosure(context, context.member(witness, "norm", "claim.data.witness"),
+                                             "claim.data.witness.norm", norm);
         context.require(less(norm, two), "claim.data.witness", "the witness norm " + text(norm) + " is not certainly < 2");
+        return "The lattice with basis rows " + basis_words(basis) + " at p = " + exact_text(p) +
+               " is not a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1: the lattice vector " + triple_text(t) +
+               " has 2p-norm in " + enclosure_words(stated) + " < 2.";
     }
 }
 

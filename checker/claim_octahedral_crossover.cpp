@@ -9,7 +9,13 @@
 // values), builds both bases at c = l = 1/2, q = 0, s = 1 with its own basis formulas (exact
 // point intervals), proves B_O0 = U B_O1 exactly for the stated integer U with det U = +-1 and
 // |det B_O0| = 4, and recomputes V_sb(p*_o) / 4.
+//
+// Keys read: claim.data {p, closed_form, phi, lattice {O0, O1, unimodular, abs_determinant}};
+// inputs {from, to}; proof {kind, cases [newton {kind, box, midpoint, derivative, image, root},
+// {kind: lattice-identity}]}.
 #include "checker/equations_crossover.hpp"
+#include "checker/literature.hpp"
+#include "checker/render.hpp"
 #include "checker/replay.hpp"
 
 namespace superpack_checker {
@@ -68,7 +74,7 @@ bool prove_sign(const Real& q, int sign, int depth) {
     return prove_sign(hull(lower_point(q), center), sign, depth + 1) && prove_sign(hull(center, upper_point(q)), sign, depth + 1);
 }
 
-void check_octahedral_crossover(const Json& claim, Context& context) {
+std::string check_octahedral_crossover(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
     const Json& inputs = context.member(document, "inputs", "");
@@ -76,7 +82,10 @@ void check_octahedral_crossover(const Json& claim, Context& context) {
     context.require(from == mpq_class(1, 2) && to == 1, "inputs", "the claim is about Eq. (6) on (1/2, 1]");
     const mpfr_prec_t precision = context.precision();
     const Real closed_form = log(integer(3, precision)) / log(integer(4, precision));
-    check_encloses(context, context.member(data, "p", "claim.data"), "claim.data.p", closed_form);
+    const Real stated_p = proved_enclosure(context, context.member(data, "p", "claim.data"), "claim.data.p", closed_form);
+    const std::string closed_text = printed_value(Printed::p_star_o).closed_form;
+    if (context.string_at(data, "closed_form", "claim.data") != closed_text)
+        context.malformed("claim.data.closed_form", "expected the paper's \"" + closed_text + "\"");
 
     const Json& proof = context.member(document, "proof", "");
     if (context.string_at(proof, "kind", "proof") != "all") context.malformed("proof.kind", "expected \"all\"");
@@ -136,8 +145,15 @@ void check_octahedral_crossover(const Json& claim, Context& context) {
     context.require(context.rational_at(lattice, "abs_determinant", "claim.data.lattice") == det,
                     "claim.data.lattice.abs_determinant", "|det B_O0| is " + det.get_str());
     context.current_step = "claim.data.phi";
-    check_encloses(context, context.member(data, "phi", "claim.data"), "claim.data.phi",
-                   superball_volume(closed_form) / rational(det, precision));
+    const Real stated_phi = proved_enclosure(context, context.member(data, "phi", "claim.data"), "claim.data.phi",
+                                             superball_volume(closed_form) / rational(det, precision));
+    return "Eq. (11) of " + std::string(paper_citation) + " (Sec. IV.A), 2 (1 - 2^(1-2p))^(1/(2p)) - 1 = 0, has exactly one root " +
+           "p*_o on (1/2, 1], p*_o = " + closed_text + " in " + enclosure_words(stated_p) +
+           " (claim.data.p); there the O0 lattice and the q -> 0 limit of the O1 (Minkowski) branch are one lattice, " +
+           "B_O0 = U B_O1 with the integer U of claim.data.lattice (det U = " + exact_text(det_u) + "), |det B_O0| = " +
+           exact_text(det) + ", and phi*_o = V_sb(p*_o) / " + exact_text(det) + " in " + enclosure_words(stated_phi) +
+           " (claim.data.phi). The paper's " + printed_value_words(Printed::p_star_o, stated_p) + "; its " +
+           printed_value_words(Printed::phi_star_o, stated_phi) + ".";
 }
 
 const ClaimKindRegistration registration("octahedral-crossover", check_octahedral_crossover);

@@ -8,10 +8,17 @@
 // to t in [0, 1] are the premise stated in the file; the checker replays the computation:
 // each piece's Krawczyk proof of v(t) with t the whole piece, its lower bound of D by the
 // stated method (recomputed in MPFI, with D' by implicit differentiation derived by hand),
-// the covering of [0, 1], the witness lattice, the area, and every claimed enclosure.
+// the covering of [0, 1], the witness lattice, the area, and every claimed enclosure. The
+// sentence states the premise (the checker's words, not the file's).
+//
+// Keys read: claim.data {p, area, optimal_determinant, optimal_phi, argmin_t, attained_by,
+// lattices {Lambda0 | Lambda1 {t, determinant, phi}}}; inputs {p, p_decimal}; proof {kind,
+// witness {t, search_box, determinant}, lattices {name {search_box}}, pieces [{t, verdict, method,
+// search_box, lower_bound, center (naive_and_mean_value)}]}.
 #include <algorithm>
 
 #include "checker/equations_superdisk.hpp"
+#include "checker/render.hpp"
 #include "checker/replay.hpp"
 
 namespace superpack_checker {
@@ -87,7 +94,19 @@ bool within_some(const Real& t, const std::vector<Real>& components) {
     return std::any_of(components.begin(), components.end(), [&](const Real& c) { return subset(t, c); });
 }
 
-void check_superdisk_optimum(const Json& claim, Context& context) {
+// The premise the checker does not replay: the reduction of the packing problem to the minimal
+// inscribed hexagon (NOTES.md 7.1) and the symmetry reduction to t in [0, 1] (7.2).
+const char* const premise =
+    "Premise (not replayed): for a centrally symmetric convex disk K the densest packing of translates is a lattice "
+    "packing (L. Fejes Toth 1950; C. A. Rogers 1951), of density area(K) / Delta(2K) = area(K) / (4 Delta(K)); and "
+    "Delta(K) = min over u in bd K of D(u) = det(u, v(u)), where v(u) is the point of bd K with v - u in bd K and "
+    "det(u, v) > 0, because every lattice with a basis u, v such that u, v, v - u lie on bd K is K-admissible and some "
+    "critical lattice has such a basis (Reinhardt 1934, Mahler 1947; Cassels, An Introduction to the Geometry of "
+    "Numbers, ch. V). The superdisk is convex for p >= 1/2 and strictly convex for p > 1/2, so v(u) is unique; with "
+    "u(t) = (x, t x), x = (1 + t^q)^(-1/q), q = 2p, the symmetries of the square reduce every u to some t in [0, 1], "
+    "and the lattice of u(t) has basis 2u, 2v and determinant 4 D(t).";
+
+std::string check_superdisk_optimum(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
     const Json& inputs = context.member(document, "inputs", "");
@@ -191,12 +210,10 @@ void check_superdisk_optimum(const Json& claim, Context& context) {
     const Real optimal_determinant = four * minimum;
     const Real area = superdisk_area(rational(p, precision));
     check_encloses(context, context.member(data, "area", "claim.data"), "claim.data.area", area);
-    check_encloses(context, context.member(data, "optimal_determinant", "claim.data"), "claim.data.optimal_determinant",
-                   optimal_determinant);
-    check_encloses(context, context.member(data, "optimal_phi", "claim.data"), "claim.data.optimal_phi",
-                   area / optimal_determinant);
-    const Real claimed_determinant =
-        context.interval(context.member(data, "optimal_determinant", "claim.data"), "claim.data.optimal_determinant");
+    const Real claimed_determinant = proved_enclosure(context, context.member(data, "optimal_determinant", "claim.data"),
+                                                      "claim.data.optimal_determinant", optimal_determinant);
+    const Real claimed_phi = proved_enclosure(context, context.member(data, "optimal_phi", "claim.data"), "claim.data.optimal_phi",
+                                              area / optimal_determinant);
 
     // Every minimiser lies in a piece kept, so in an argmin component.
     const Json& argmin_json = context.member(data, "argmin_t", "claim.data");
@@ -213,9 +230,11 @@ void check_superdisk_optimum(const Json& claim, Context& context) {
     const Json& lattice_proofs = context.member(proof, "lattices", "proof");
     if (!lattices.is_object()) context.malformed("claim.data.lattices", "expected an object");
     std::vector<std::pair<std::string, Real>> determinants;
-    for (const auto& [name, lattice] : lattices.items()) {
+    for (auto entry = lattices.begin(); entry != lattices.end(); ++entry) {
+        const std::string name = entry.key();
         const std::string path = "claim.data.lattices." + name, proof_path = "proof.lattices." + name;
         if (name != "Lambda0" && name != "Lambda1") context.malformed(path, "unknown lattice \"" + name + "\"");
+        const Json& lattice = context.member(lattices, name, "claim.data.lattices");
         const Real t = context.interval(context.member(lattice, "t", path), path + ".t");
         const Real& expected = name == "Lambda0" ? one : zero;
         context.require(subset(t, expected) && subset(expected, t), path + ".t",
@@ -232,6 +251,7 @@ void check_superdisk_optimum(const Json& claim, Context& context) {
     }
     const Json& attained = context.member(data, "attained_by", "claim.data");
     if (!attained.is_array()) context.malformed("claim.data.attained_by", "expected an array of lattice names");
+    std::string attained_words;
     for (const Json& name_json : attained) {
         if (!name_json.is_string()) context.malformed("claim.data.attained_by", "expected lattice names");
         const std::string name = name_json.get<std::string>();
@@ -244,7 +264,20 @@ void check_superdisk_optimum(const Json& claim, Context& context) {
         const Real t = name == "Lambda0" ? one : zero;
         context.require(within_some(t, argmin), "claim.data.attained_by",
                         "the t of " + name + " lies in no argmin interval");
+        attained_words += std::string(attained_words.empty() ? "" : " and ") + name + " (t = " + (name == "Lambda0" ? "1" : "0") + ")";
     }
+
+    check_p_decimal(context, inputs, p);  // after the proof, which names a wrong p first
+
+    // The sentence: the stated enclosures, each proved above to contain the checker's values.
+    return std::string(premise) + " Under it: the densest lattice packing of the superdisk K: |x|^(2p) + |y|^(2p) <= 1 at p = " +
+           exact_text(p) + " has packing density phi = area(K) / Delta(2K) in " + enclosure_words(claimed_phi) +
+           " (claim.data.optimal_phi), with Delta(2K) = 4 min D(t) over t in [0, 1] in " + enclosure_words(claimed_determinant) +
+           " (claim.data.optimal_determinant); every minimiser t in [0, 1] of D lies in an interval of claim.data.argmin_t; " +
+           (attained_words.empty() ? std::string("no lattice checked by name (Lambda0 at t = 1, Lambda1 at t = 0) is shown to attain it")
+                                   : "the optimum is attained within its enclosure by " + attained_words +
+                                         " (4 D(t) lies in the enclosure of Delta(2K))") +
+           ".";
 }
 
 const ClaimKindRegistration registration("superdisk-optimum", check_superdisk_optimum);

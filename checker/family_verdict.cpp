@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "checker/render.hpp"
+
 namespace superpack_checker {
 
 namespace {
@@ -30,9 +32,9 @@ long floor_of_upper(const Real& x) {
 
 }  // namespace
 
-void check_family_verdict(Context& context, const FamilyForms& forms, const NamedReals& symbols, const Real& p,
-                          const Json& stated, const std::string& stated_path, const Json& enumeration,
-                          const std::string& enumeration_path) {
+FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, const NamedReals& symbols, const Real& p,
+                                   const std::string& verdict, const Json& stated, const std::string& stated_path,
+                                   const Json& enumeration, const std::string& enumeration_path) {
     const mpfr_prec_t precision = p.precision();
     std::vector<Real> values;
     for (const std::string& name : forms.symbols) {
@@ -45,19 +47,23 @@ void check_family_verdict(Context& context, const FamilyForms& forms, const Name
         if (!found) context.malformed(enumeration_path, "no value for the symbol " + name);
     }
     const Real two = integer(2, precision);
-    const std::string verdict = context.string_at(stated, "verdict", stated_path);
     context.current_step = stated_path;
+    FamilyVerdict result;
     if (verdict == "overlapping") {
+        if (!enumeration.is_null()) context.malformed(enumeration_path, "an overlap is proved by its witness: expected null");
         const std::string path = stated_path + ".witness";
         const Json& witness = context.member(stated, "witness", stated_path);
         const Triple t = read_triple(context, context.member(witness, "coefficients", path), path + ".coefficients");
         context.require(t != Triple{0, 0, 0}, path, "the zero vector is no witness");
         const Real own = norm(coordinates(combination(forms, t), values, precision), p);
-        check_encloses(context, context.member(witness, "norm", path), path + ".norm", own);
+        result.witness = t;
+        result.witness_norm = proved_enclosure(context, context.member(witness, "norm", path), path + ".norm", own);
         context.require(less(own, two), path, "the witness norm " + text(own) + " is not certainly < 2");
-        return;
+        return result;
     }
     if (verdict != "packing") context.malformed(stated_path + ".verdict", "expected packing or overlapping");
+    if (!enumeration.is_object() || context.string_at(enumeration, "kind", enumeration_path) != "enumeration")
+        context.malformed(enumeration_path, "a packing needs its enumeration");
 
     // The coefficient box from the checker's own basis: |a_i| <= 2 ||e_j x e_k||_1 / |det|.
     std::array<Coordinates, 3> rows{coordinates(forms.basis[0], values, precision),
@@ -125,6 +131,17 @@ void check_family_verdict(Context& context, const FamilyForms& forms, const Name
     }
     context.require(listed_contacts == contacts, enumeration_path + ".contacts",
                     "the listed contacts differ from the checker's (each must be one of the family's identities)");
+    result.packing = true;
+    result.contacts = count.get<long>();
+    return result;
+}
+
+std::string verdict_words(const FamilyVerdict& verdict) {
+    if (verdict.packing)
+        return "is a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1 with " + std::to_string(verdict.contacts) +
+               " contacts (every nonzero lattice vector has 2p-norm >= 2, with equality exactly for the contact vectors)";
+    return "is not a packing: the lattice vector " + triple_text(verdict.witness) + " has 2p-norm in " +
+           enclosure_words(*verdict.witness_norm) + " < 2";
 }
 
 }  // namespace superpack_checker

@@ -6,6 +6,7 @@
 // family (identically norm 2), or else the packing claim is rejected. Shared by the claim
 // kinds family-lattice-check and audit.
 #pragma once
+#include <optional>
 #include <string>
 
 #include "checker/equations_audit.hpp"
@@ -14,12 +15,27 @@
 
 namespace superpack_checker {
 
-// `stated` is an object {"verdict": "packing" | "overlapping", "contacts", "contact_vectors"
-// (packing) | "witness": {"coefficients", "norm"} (overlapping)}; `enumeration` is the proof's
-// {"kind": "enumeration", "coefficient_bound", "contacts": [{"coefficients"}]} (packing only).
+// What a verified verdict says, for the claim sentence: the contact count of a packing, or the
+// witness and its stated norm enclosure (proved to contain the checker's norm).
+struct FamilyVerdict {
+    bool packing = false;
+    long contacts = 0;
+    Triple witness{};
+    std::optional<Real> witness_norm;
+};
+
+// `verdict` is "packing" or "overlapping" (the caller reads it from `stated`; an audit piece
+// overlapping at a point is checked as overlapping there); `stated` holds {"contacts",
+// "contact_vectors"} (packing) or {"witness": {"coefficients", "norm"}} (overlapping);
+// `enumeration` is the proof's {"kind": "enumeration", "coefficient_bound", "contacts":
+// [{"coefficients"}]} for a packing and null for an overlap (the witness is its own proof).
 // p must be >= 1/2 throughout (the caller checks it on exact rationals).
-void check_family_verdict(Context& context, const FamilyForms& forms, const NamedReals& symbols, const Real& p,
-                          const Json& stated, const std::string& stated_path, const Json& enumeration,
-                          const std::string& enumeration_path);
+FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, const NamedReals& symbols, const Real& p,
+                                   const std::string& verdict, const Json& stated, const std::string& stated_path,
+                                   const Json& enumeration, const std::string& enumeration_path);
+
+// "is a packing of the superball ... with 12 contacts (...)" or "is not a packing: the lattice
+// vector (1, -1, -1) has 2p-norm in [...] < 2".
+std::string verdict_words(const FamilyVerdict& verdict);
 
 }  // namespace superpack_checker

@@ -46,7 +46,7 @@ int run(const std::string& file, bool json) {
     if (json) {
         Document document{{"tool", "superpack-verify"}, {"version", SUPERPACK_VERSION}, {"commit", SUPERPACK_COMMIT},
                       {"command", "verify"}, {"file", file}, {"verdict", to_string(report.verdict)},
-                      {"claim_kind", report.claim_kind}, {"claim", report.claim_text}, {"steps", report.steps},
+                      {"claim_kind", report.claim_kind}, {"claim", report.rendered_claim}, {"steps", report.steps},
                       {"checker_bits", report.precision}};
         if (report.verdict != Verdict::valid) {
             document["failing_step"] = report.path;
@@ -54,7 +54,7 @@ int run(const std::string& file, bool json) {
         }
         std::cout << document.dump(2) << "\n";
     } else if (report.verdict == Verdict::valid) {
-        std::cout << "valid: " << report.claim_text << "\n  (" << report.steps << " steps checked with MPFI at "
+        std::cout << "valid: " << report.rendered_claim << "\n  (" << report.steps << " steps checked with MPFI at "
                   << report.precision << " bits)\n";
     }
     if (report.verdict == Verdict::invalid) {

@@ -10,8 +10,9 @@ namespace superpack_checker {
 
 namespace {
 std::unique_ptr<Real> optional_interval(Context& context, const Json& node, const std::string& key, const std::string& path) {
-    if (!node.contains(key)) return nullptr;
-    return std::make_unique<Real>(context.interval(node[key], path + "." + key));
+    const Json* value = context.optional_member(node, key);
+    if (!value) return nullptr;
+    return std::make_unique<Real>(context.interval(*value, path + "." + key));
 }
 // Interval Newton from a bare box: f' excludes 0 on X (at most one root in X), and some
 // iterate X_k (X_{k+1} = N(X_k) ∩ X_k, which keeps every root of X) has N(X_k) inside its

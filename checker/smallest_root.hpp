@@ -9,7 +9,7 @@
 
 namespace superpack_checker {
 
-// node: {"box": X} with, optionally, the producer's "midpoint", "derivative", "image" (each
+// node: {"box": X} (and "kind", "family", read by the caller) with, optionally, the producer's "midpoint", "derivative", "image" (each
 // must contain the checker's) and "root" (must hold the checker's tightened root). Returns an
 // enclosure of s(p) for every p of equation.p, tightened by further Newton steps.
 Real replay_smallest_root(Context& context, const CubicEquation& equation, const Json& node, const std::string& path);

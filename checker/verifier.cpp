@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
+
+#include "checker/document_check.hpp"
+#include "checker/json_reader.hpp"
 
 namespace superpack_checker {
 
@@ -70,7 +74,13 @@ void Context::require(bool condition, const std::string& path, const std::string
 
 const Json& Context::member(const Json& object, const std::string& key, const std::string& path) const {
     if (!object.is_object() || !object.contains(key)) malformed(path, "missing \"" + key + "\"");
-    return object[key];
+    const Json& value = object[key];
+    read_->insert(&value);
+    return value;
+}
+
+const Json* Context::optional_member(const Json& object, const std::string& key) const {
+    return object.is_object() && object.contains(key) ? &member(object, key, "") : nullptr;
 }
 
 std::string Context::string_at(const Json& object, const std::string& key, const std::string& path) const {
@@ -123,8 +133,8 @@ VerifyReport verify_document(const Json& document) {
         if (head.string_at(document, "format", "") != "superpack-certificate")
             head.malformed("format", "not a superpack certificate");
         const Json& version = head.member(document, "format_version", "");
-        if (!version.is_number_integer() || version.get<long>() != 1)
-            head.malformed("format_version", "unsupported format version (this checker reads 1)");
+        if (!version.is_number_integer() || version.get<long>() != 2)
+            head.malformed("format_version", "unsupported format version (this checker reads 2)");
         const Json& bits = head.member(document, "bits", "");
         if (!bits.is_number_integer() || bits.get<long>() < 2 || bits.get<long>() > 2000000)
             head.malformed("bits", "expected the producer's precision in bits");
@@ -136,14 +146,15 @@ VerifyReport verify_document(const Json& document) {
         // The checker works 64 bits above the producer (at least 128), so that its own
         // enclosures are tighter than the ones it checks.
         report.precision = std::max<mpfr_prec_t>(128, bits.get<long>() + 64);
-        Context context(document, report.precision);
+        Context context(head, report.precision);
         const Json& passed = context.member(self_test, "passed", "rounding_self_test");
         context.require(passed.is_boolean() && passed.get<bool>(), "rounding_self_test.passed",
                         "the producer's rounding self-test did not pass");
         const auto checker = registry().find(report.claim_kind);
         if (checker == registry().end()) context.malformed("claim.kind", "unknown claim kind \"" + report.claim_kind + "\"");
         try {
-            checker->second(claim, context);
+            report.rendered_claim = checker->second(claim, context);
+            check_document(context, document, report.claim_text, report.rendered_claim);
         } catch (const std::domain_error& error) {
             // An operation outside its domain (log of a box reaching 0, ...) means a stored box
             // is not what the claim needs: a failed step, reported as such.
@@ -172,12 +183,19 @@ VerifyReport verify_file(const std::string& path) {
         report.message = "cannot read " + path;
         return report;
     }
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     Json document;
     try {
-        document = Json::parse(file);
+        document = read_json(text);
     } catch (const Json::exception& error) {
         VerifyReport report;
         report.message = std::string("not JSON: ") + error.what();
+        return report;
+    } catch (const Rejection& rejection) {
+        VerifyReport report;
+        report.verdict = rejection.verdict;
+        report.path = rejection.path;
+        report.message = rejection.message;
         return report;
     }
     return verify_document(document);

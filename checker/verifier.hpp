@@ -3,10 +3,15 @@
 // A claim kind is checked by one function registered under its name (ClaimKindRegistration
 // in a file checker/claim_<kind>.cpp); the verifier checks the head of the file, then
 // dispatches on claim.kind. Every check names its place in the document (a path such as
-// proof.cases[1].cases[0]) so that a rejection says which step failed.
+// proof.cases[1].cases[0]) so that a rejection says which step failed. A claim kind returns
+// the claim sentence, rendered from what it verified; the certificate's claim.text must be
+// that sentence, every "decimal" must be the checker's rendering of its exact ends, and every
+// key must have been read by some step (document_check.hpp).
 #pragma once
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "checker/real.hpp"
@@ -23,6 +28,10 @@ struct VerifyReport {
     std::string path;     // the first failing step (empty when valid)
     std::string message;  // why it failed
     std::string claim_kind, claim_text;
+    // The checker's sentence for the claim, from the values it verified. Set once the claim
+    // kind's replay has passed, also when a later step rejects the file: claim.text is
+    // compared last, so a report rejected at "claim.text" has passed every other check.
+    std::string rendered_claim;
     long steps = 0;       // checks performed
     mpfr_prec_t precision = 0;
 };
@@ -40,7 +49,11 @@ struct Rejection {
 // step counter.
 class Context {
 public:
-    Context(const Json& document, mpfr_prec_t precision) : document_(document), precision_(precision) {}
+    Context(const Json& document, mpfr_prec_t precision)
+        : document_(document), precision_(precision), read_(std::make_shared<std::unordered_set<const Json*>>()) {}
+    // The same document at another precision, sharing the record of what has been read.
+    Context(const Context& other, mpfr_prec_t precision)
+        : document_(other.document_), precision_(precision), read_(other.read_) {}
     const Json& document() const { return document_; }
     mpfr_prec_t precision() const { return precision_; }
     long steps() const { return steps_; }
@@ -53,7 +66,11 @@ public:
     // Checks `condition` as one step; rejects with `message` at `path` when it fails.
     void require(bool condition, const std::string& path, const std::string& message);
 
+    // Every value read through member (and the readers built on it) is recorded: a key of the
+    // document that no step read is an unknown key (document_check.hpp).
     const Json& member(const Json& object, const std::string& key, const std::string& path) const;
+    const Json* optional_member(const Json& object, const std::string& key) const;  // null when absent
+    bool was_read(const Json& value) const { return read_->count(&value) != 0; }
     std::string string_at(const Json& object, const std::string& key, const std::string& path) const;
     // {"lo": "m*2^e", "hi": "m*2^e"}, read exactly; lo > hi is a rejection (an empty set).
     Real interval(const Json& node, const std::string& path);
@@ -64,9 +81,11 @@ private:
     const Json& document_;
     mpfr_prec_t precision_;
     long steps_ = 0;
+    std::shared_ptr<std::unordered_set<const Json*>> read_;
 };
 
-using ClaimChecker = void (*)(const Json& claim, Context& context);
+// Replays the claim and returns its sentence, rendered from the values it verified.
+using ClaimChecker = std::string (*)(const Json& claim, Context& context);
 struct ClaimKindRegistration {
     ClaimKindRegistration(const char* kind, ClaimChecker checker);
 };

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "checker/render.hpp"
 #include "checker/verifier.hpp"
 
 namespace superpack::test {
@@ -42,6 +43,31 @@ inline std::string tamper_inward(const std::string& text, bool lower) {
         while (mantissa.size() > lead + 1 && mantissa[lead] == '0') mantissa.erase(lead, 1);
     }
     return mantissa + rest;
+}
+
+// Moves the bound at `pointer` (".../lo" or ".../hi") inward with tamper_inward and renders the
+// decimal beside it again by the checker's rule, so that only the replay of the proof can tell
+// (the generic checks of decimals and of claim.text come after it). Returns the new bound.
+inline std::string tamper_bound(nlohmann::json& document, const std::string& pointer) {
+    const nlohmann::json::json_pointer at(pointer);
+    const bool lower = pointer.substr(pointer.size() - 2) == "lo";
+    const std::string after = tamper_inward(document[at].get<std::string>(), lower);
+    document[at] = after;
+    nlohmann::json& interval = document[at.parent_pointer()];
+    try {
+        const nlohmann::json copy = interval;
+        superpack_checker::Context context(copy, 4096);
+        interval["decimal"] = superpack_checker::decimal_field(context.interval(copy, pointer));
+    } catch (const superpack_checker::Rejection&) {
+        // lo > hi now (an empty interval): the replay rejects it at the bound's step anyway.
+    }
+    return after;
+}
+
+// A step of the proof, not the generic checks that follow it (a decimal, claim.text): where a
+// tampered bound must be rejected.
+inline bool proof_step(const std::string& path) {
+    return !path.empty() && path != "claim.text" && (path.size() < 8 || path.substr(path.size() - 8) != ".decimal");
 }
 
 // The step at which the checker rejects `document`, or "(not rejected: <verdict>)": one

@@ -19,7 +19,9 @@ using superpack_checker::Verdict;
 using superpack_checker::verify_document;
 using Document = nlohmann::json;
 using superpack::test::collect_bounds;
+using superpack::test::proof_step;
 using superpack::test::rejected_at;
+using superpack::test::tamper_bound;
 using superpack::test::tamper_inward;
 
 Document certificate(superpack::Family family, const std::string& p) {
@@ -51,6 +53,27 @@ TEST_CASE("the certificate head describes itself and the checker accepts the unt
     CHECK(verify_document(document).verdict == Verdict::valid);
 }
 
+TEST_CASE("the producer writes the checker's sentence, and nothing the checker rejects") {
+    const Document document = certificate(superpack::Family::C0, "1.5");
+    const auto report = verify_document(document);
+    CHECK(report.rendered_claim == document["claim"]["text"]);
+    // A document the checker rejects is never returned: the assembler replays it first.
+    superpack::Json claim = superpack::Json::parse(document["claim"].dump());
+    claim.erase("text");
+    claim["data"]["phi"] = claim["data"]["volume"];  // phi = V_sb: not V_sb / |det B|
+    const auto assemble = [&] {
+        return superpack::certificate_document(superpack::certificate_head("density", superpack::DoubleField{}, 15), claim,
+                                               superpack::Json::parse(document["inputs"].dump()),
+                                               superpack::Json::parse(document["proof"].dump()));
+    };
+    CHECK_THROWS_AS(assemble(), superpack::CertificateRejected);
+    try {
+        assemble();
+    } catch (const superpack::CertificateRejected& error) {
+        CHECK(std::string(error.what()).find("rejects this certificate at claim.data.phi") != std::string::npos);
+    }
+}
+
 TEST_CASE("endpoints are exact dyadic numbers") {
     mpfr_t x;
     mpfr_init2(x, 53);
@@ -78,12 +101,11 @@ TEST_CASE("changing a digit of any bound is rejected, naming a step") {
             Document copy = original;
             const Document::json_pointer pointer(bound);
             const std::string before = copy[pointer].get<std::string>();
-            const std::string after = tamper_inward(before, bound.substr(bound.size() - 2) == "lo");
-            copy[pointer] = after;
+            const std::string after = tamper_bound(copy, bound);
             const auto report = verify_document(copy);
-            INFO(bound << ": " << before << " -> " << after);
+            INFO(bound << ": " << before << " -> " << after << " (" << report.path << ")");
             CHECK(report.verdict == Verdict::invalid);
-            CHECK(!report.path.empty());
+            CHECK(proof_step(report.path));
             ++tampered;
         }
     }
@@ -94,18 +116,20 @@ TEST_CASE("deleting a case is rejected at that case") {
     const Document original = certificate(superpack::Family::O1, "0.6");
     // Drop the second case of the first split: the split no longer covers its box.
     Document without_case = original;
-    without_case["proof"]["cases"][0]["cases"].erase(1);
-    CHECK(rejected_at(without_case) == "proof.cases[0].cases");
+    Document& split = without_case["proof"]["parameters"]["cases"][0];
+    split["cases"].erase(1);
+    CHECK(rejected_at(without_case) == "proof.parameters.cases[0].cases");
     // Replace a split by one of its halves: the parent's cover check fails.
     Document half = original;
-    half["proof"]["cases"][0]["cases"][1] = Document(original["proof"]["cases"][0]["cases"][1]["cases"][0]);
+    const Document& halves = original["proof"]["parameters"]["cases"][0]["cases"][1]["cases"];
+    half["proof"]["parameters"]["cases"][0]["cases"][1] = Document(halves[0]);
     auto report = verify_document(half);
     CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path.rfind("proof.cases[0].cases[1]", 0) == 0);
+    CHECK(report.path.rfind("proof.parameters.cases[0].cases[1]", 0) == 0);
     // C0: drop the root-free partition.
     Document cubic = certificate(superpack::Family::C0, "1.5");
-    cubic["proof"]["cases"].erase(1);
-    CHECK(rejected_at(cubic) == "proof.cases");
+    cubic["proof"]["parameters"]["cases"].erase(1);
+    CHECK(rejected_at(cubic) == "proof.parameters.cases");
 }
 
 TEST_CASE("changing p is rejected") {
@@ -114,7 +138,7 @@ TEST_CASE("changing p is rejected") {
     both["claim"]["data"]["p"] = "31/20";
     auto report = verify_document(both);
     CHECK(report.verdict == Verdict::invalid);
-    CHECK(report.path.rfind("proof.cases[0]", 0) == 0);  // the Newton step fails first
+    CHECK(report.path.rfind("proof.parameters.cases[0]", 0) == 0);  // the Newton step fails first
     Document input_only = certificate(superpack::Family::O0, "0.85");
     input_only["inputs"]["p"] = "43/50";
     CHECK(rejected_at(input_only) == "inputs.p");
@@ -128,7 +152,7 @@ TEST_CASE("a failed producer self-test, a foreign format and bad numbers are tol
     failed["rounding_self_test"]["passed"] = false;
     CHECK(rejected_at(failed) == "rounding_self_test.passed");
     Document foreign = failed;
-    foreign["format_version"] = 2;
+    foreign["format_version"] = 1;  // the format before the checker rendered the claim
     CHECK(verify_document(foreign).verdict == Verdict::malformed);
     Document decimal = certificate(superpack::Family::O0, "0.85");
     decimal["claim"]["data"]["phi"]["lo"] = "0.7656";  // a rounded decimal is not an exact endpoint
@@ -199,11 +223,11 @@ TEST_CASE("lattice-check: changing a digit of any bound is rejected, naming a st
             Document copy = original;
             const Document::json_pointer pointer(bound);
             const std::string before = copy[pointer].get<std::string>();
-            copy[pointer] = tamper_inward(before, bound.substr(bound.size() - 2) == "lo");
+            tamper_bound(copy, bound);
             const auto report = verify_document(copy);
-            INFO(bound << ": " << before << " -> " << copy[pointer]);
+            INFO(bound << ": " << before << " -> " << copy[pointer] << " (" << report.path << ")");
             CHECK(report.verdict == Verdict::invalid);
-            CHECK(!report.path.empty());
+            CHECK(proof_step(report.path));
             ++tampered;
         }
     }

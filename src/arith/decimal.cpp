@@ -48,6 +48,9 @@ std::string width(const I& x, long bits) {
 int printed_digits(long bits) { return static_cast<int>(std::ceil(bits * 0.30103)) + 2; }
 
 DecimalEnclosure to_decimal(const DInterval& x, int digits) { return decimal(x, digits, 53); }
+DecimalEnclosure to_decimal(const mpfr_t lo, const mpfr_t hi, int digits) {
+    return {format(lo, digits, false), format(hi, digits, true)};
+}
 DecimalEnclosure to_decimal(const Ball& x, int digits) { return decimal(x, digits, x.precision()); }
 DecimalEnclosure to_fixed(const DInterval& x, int decimals) { return decimal(x, decimals, 53, true); }
 DecimalEnclosure to_fixed(const Ball& x, int decimals) { return decimal(x, decimals, x.precision(), true); }

@@ -3,10 +3,11 @@
 
 #include <stdexcept>
 
-#include "superpack/cert/atomic_file.hpp"
-#include "superpack/cert/dyadic_text.hpp"
+#include "checker/verifier.hpp"
 #include "superpack/arith/decimal.hpp"
 #include "superpack/arith/self_test.hpp"
+#include "superpack/cert/atomic_file.hpp"
+#include "superpack/cert/dyadic_text.hpp"
 
 namespace superpack {
 
@@ -30,7 +31,10 @@ Json exact_interval(const I& x, long bits) {
     mpfr_t lo, hi;
     mpfr_inits2(bits, lo, hi, static_cast<mpfr_ptr>(nullptr));
     get_bounds(lo, hi, x);
-    const DecimalEnclosure text = to_decimal(x, 17);
+    // The file's "0" has no sign; the decimal is rendered from the same unsigned zero.
+    if (mpfr_zero_p(lo)) mpfr_set_zero(lo, 1);
+    if (mpfr_zero_p(hi)) mpfr_set_zero(hi, 1);
+    const DecimalEnclosure text = to_decimal(lo, hi, 17);
     Json result{{"lo", dyadic_text(lo)}, {"hi", dyadic_text(hi)}, {"decimal", "[" + text.lo + ", " + text.hi + "]"}};
     mpfr_clears(lo, hi, static_cast<mpfr_ptr>(nullptr));
     return result;
@@ -60,9 +64,17 @@ Json certificate_head(const std::string& command, const Field& field, long digit
 }
 
 Json certificate_document(Json head, Json claim, Json inputs, Json proof) {
-    head["claim"] = std::move(claim);
+    // The text, which the checker renders, goes between the kind and the data.
+    head["claim"] = Json{{"kind", claim["kind"]}, {"text", ""}, {"data", std::move(claim["data"])}};
     head["inputs"] = std::move(inputs);
     head["proof"] = std::move(proof);
+    // claim.text is compared last: a rejection there means every other step passed.
+    const superpack_checker::VerifyReport report = superpack_checker::verify_document(head);
+    const bool only_text = report.verdict == superpack_checker::Verdict::invalid && report.path == "claim.text";
+    if (report.verdict != superpack_checker::Verdict::valid && !only_text)
+        throw CertificateRejected("the checker rejects this certificate at " + (report.path.empty() ? "(head)" : report.path) +
+                                  ": " + report.message);
+    head["claim"]["text"] = report.rendered_claim;
     return head;
 }
 

@@ -2,18 +2,12 @@
 
 #include <stdexcept>
 
-#include "superpack/cert/certificate_partition.hpp"
 #include "superpack/arith/decimal.hpp"
+#include "superpack/cert/certificate_partition.hpp"
 
 namespace superpack {
 
 namespace {
-
-template <class I>
-std::string decimal_text(const I& x) {
-    const DecimalEnclosure text = to_fixed(x, 20);
-    return "[" + text.lo + ", " + text.hi + "]";
-}
 
 template <class I>
 const I& certified(const std::optional<I>& x, const char* what) {
@@ -37,9 +31,7 @@ Json smallest_root_json(Family family, const FamilyLattice<I>& lattice, const I&
                 {"midpoint", exact_interval_json(center)},
                 {"derivative", exact_interval_json(derivative)},
                 {"image", exact_interval_json(center - equation(center) / derivative)},
-                {"root", exact_interval_json(lattice.search.back().root[0])},
-                {"reason", "N(X) = m - f(m)/f'(X) lies in the interior of X, and f is increasing on [0, upper end of X] "
-                           "(df/ds = 2p ((s+t)^(2p-1) + k s^(2p-1)) > 0 for s >= 0), so s is the smallest positive root"}};
+                {"root", exact_interval_json(lattice.search.back().root[0])}};
 }
 
 // A Newton box for s over a piece: the certified root enclosure widened by half its width on
@@ -84,7 +76,7 @@ Json cubic_crossover_certificate(const CubicCrossover<typename Field::Interval>&
     for (const SignPiece& piece : crossover.pieces) {
         if (piece.claim == PieceClaim::undecided) throw std::runtime_error("certificate: an undecided piece");
         const Ball interval = from_doubles(partition_field.integer(0), piece.p.lower(), piece.p.upper());
-        Json entry{{"p", exact_interval_json(piece.p)}, {"claim", to_string(piece.claim)}, {"reason", piece.reason}};
+        Json entry{{"p", exact_interval_json(piece.p)}, {"claim", to_string(piece.claim)}};
         for (const Family family : {Family::C0, Family::C1}) {
             const auto root = certify_piece_root(family, interval);
             if (!root) throw std::runtime_error("certificate: s not certified again over a piece");
@@ -93,25 +85,14 @@ Json cubic_crossover_certificate(const CubicCrossover<typename Field::Interval>&
         if (piece.claim == PieceClaim::root) entry["root"] = exact_interval_json(p);
         pieces.push_back(entry);
     }
-    const Json at_start{
-        {"kind", "sphere-point"},
-        {"p", "1"},
-        {"s_C0", Json{{"a", "1/2"}, {"b", "-1/4"}}},
-        {"s_C1", Json{{"a", "0"}, {"b", "1/6"}}},
-        {"text", "at p = 1, t = sqrt2/2, s_C0 = (2 - sqrt2)/4 solves Eq. 2 and s_C1 = sqrt2/6 solves Eq. 9 (each a + b sqrt2), "
-                 "and |det B_C0| = |det B_C1| = 4 sqrt2 (both FCC): g(1) = 0 exactly"}};
-    const Json proof{
-        {"kind", "sign-partition"},
-        {"text", "the pieces partition [1, 10] in order; each has one sign of g = phi_C1 - phi_C0 on it (on (1, b] for the "
-                 "first, where g(1) = 0 and g' has one sign), except one piece with exactly one zero (interval Newton in p)"},
-        {"at_start", at_start},
-        {"pieces", pieces}};
-    const std::string p_text = decimal_text(p), phi_text = decimal_text(phi);
+    // At p = 1 (t = sqrt2/2) s_C0 = (2 - sqrt2)/4 and s_C1 = sqrt2/6, each as a + b sqrt2: both
+    // lattices are FCC there and g(1) = 0 exactly.
+    const Json at_start{{"kind", "sphere-point"},
+                        {"p", "1"},
+                        {"s_C0", Json{{"a", "1/2"}, {"b", "-1/4"}}},
+                        {"s_C1", Json{{"a", "0"}, {"b", "1/6"}}}};
+    const Json proof{{"kind", "sign-partition"}, {"at_start", at_start}, {"pieces", pieces}};
     Json claim{{"kind", "cubic-crossover"},
-               {"text", "g(p) = phi_C1(p) - phi_C0(p) (the densities of the C1 and C0 lattices of Jiao, Stillinger and "
-                        "Torquato 2009) has exactly one zero p*_c in (1, 10], p*_c in " + p_text +
-                        "; g < 0 on (1, p*_c) (C0 denser) and g > 0 on (p*_c, 10] (C1 denser); phi*_c = phi_C0(p*_c) = "
-                        "phi_C1(p*_c) in " + phi_text + " (exact endpoints in data)"},
                {"data", Json{{"difference", "phi_C1(p) - phi_C0(p)"},
                              {"from", "1"},
                              {"to", "10"},
@@ -150,26 +131,17 @@ Json octahedral_crossover_certificate(const OctahedralCrossover<typename Field::
     const I center = midpoint(box);
     const I one = field.integer(1), two = field.integer(2);
     const I image = center - (two * octahedral_height(center) - one) / newton.derivative;
+    // Interval Newton on Eq. (6) itself; at p*_o, 3 = 4^p gives c = l = 1/2 and (q, s) = (0, 1)
+    // solves Eq. (12), so B_O0 = U B_O1 (NOTES.md 6.3).
     const Json newton_leaf{{"kind", "newton"},
-                           {"equation", "2 (1 - 2^(1-2p))^(1/(2p)) - 1 (Eq. 6)"},
                            {"box", exact_interval_json(box)},
                            {"midpoint", exact_interval_json(center)},
                            {"derivative", exact_interval_json(newton.derivative)},
                            {"image", exact_interval_json(image)},
-                           {"root", exact_interval_json(newton.box)},
-                           {"reason", "interval Newton on Eq. (6) itself: its root in the box meets ln3/ln4"}};
-    const Json identity{{"kind", "lattice-identity"},
-                        {"text", "at p*_o, 3 = 4^p gives c = (1 - 2 4^-p)^(1/(2p)) = 3^(-1/(2p)) = 1/2 = l, and (q, s) = (0, 1) "
-                                 "solves Eq. (12); B_O0 = U B_O1 with the integer U, det U = -1"}};
-    const Json proof{{"kind", "all"},
-                     {"text", "Lemma (NOTES.md 6.3): for p > 1/2, Eq. (6) <=> 1 - 2^(1-2p) = 2^(-2p) <=> 4^p = 3, so its only root "
-                              "on (1/2, 1] is ln3/ln4; the Newton case checks Eq. (6) itself there"},
-                     {"cases", Json::array({newton_leaf, identity})}};
+                           {"root", exact_interval_json(newton.box)}};
+    const Json identity{{"kind", "lattice-identity"}};
+    const Json proof{{"kind", "all"}, {"cases", Json::array({newton_leaf, identity})}};
     Json claim{{"kind", "octahedral-crossover"},
-               {"text", "Eq. (6) of Jiao, Stillinger and Torquato (2009), 2 (1 - 2^(1-2p))^(1/(2p)) = 1, has exactly one root on "
-                        "(1/2, 1], p*_o = ln3/ln4 in " + decimal_text(p) +
-                        "; there the O0 lattice and the q -> 0 limit of the O1 (Minkowski) branch are one lattice, "
-                        "|det| = 4, and phi*_o = V_sb(p*_o)/4 in " + decimal_text(phi) + " (exact endpoints in data)"},
                {"data", Json{{"p", exact_interval_json(p)},
                              {"closed_form", "ln3/ln4"},
                              {"phi", exact_interval_json(phi)},
@@ -213,21 +185,12 @@ Json sphere_slopes_certificate(const SphereSlopes<typename Field::Interval>& slo
     const I p = field.integer(1);
     Json cases = Json::array();
     for (const Family family : {Family::C0, Family::C1}) cases.push_back(smallest_root_json(family, enclose_family(family, one, field), p));
-    cases.push_back(Json{{"kind", "evaluation"}, {"family", "O0"}, {"reason", "c = (1 - 2^(1-2p))^(1/(2p)) needs no root"}});
-    const Json proof{{"kind", "all"},
-                     {"text", "s(1) for C0 and C1, then every slope by implicit differentiation: ds/dp = -f_p/f_s, "
-                              "phi' = (V' |det| - V |det|') / |det|^2"},
-                     {"cases", cases}};
+    // O0 needs no root: c = (1 - 2^(1-2p))^(1/(2p)); every slope by implicit differentiation.
+    cases.push_back(Json{{"kind", "evaluation"}, {"family", "O0"}});
+    const Json proof{{"kind", "all"}, {"cases", cases}};
     const I c_slope = octahedral_height(variable(p)).derivative;
-    const std::string a_plus_text = decimal_text(a_plus), closed_plus_text = decimal_text(closed_plus);
     Json claim{
         {"kind", "sphere-slopes"},
-        {"text", "At the sphere point p = 1 the density slopes are: a_minus = phi_O0'(1) in " + decimal_text(a_minus) +
-                     " (matching the paper's closed form and its printed -0.02941...); a_plus = phi_" + slopes.a_plus_family +
-                     "'(1) in " + a_plus_text + " (the larger cubic slope; the denser family just right of p = 1). "
-                     "The paper's a_plus is wrong twice: its closed form -(pi/(12 sqrt2)) [24 + ln 8 + 4 psi(1/2) + 2 psi(3/2) - "
-                     "6 psi(5/2)] is " + closed_plus_text + ", and its printed value 0.3555... is neither; the certified "
-                     "a_plus is " + a_plus_text + " (exact endpoints in data)"},
         {"data",
          Json{{"p", "1"},
               {"C0", family_slope_json(slopes.c0, "s", certified(slopes.c0.parameter_slope, "ds/dp"))},

@@ -5,6 +5,7 @@
 
 #include "common.hpp"
 #include "superpack/cert/atomic_file.hpp"
+#include "superpack/cert/certificate.hpp"
 #include "superpack/cert/version.hpp"
 
 namespace {
@@ -78,6 +79,8 @@ int main(int argc, char** argv) {
         error = {exit_usage, file_error.what()};
     } catch (const std::filesystem::filesystem_error& file_error) {
         error = {exit_usage, file_error.what()};
+    } catch (const superpack::CertificateRejected& rejected) {
+        error = {exit_invalid, std::string("no certificate written: ") + rejected.what()};
     } catch (const Failure& failure) {
         error = {failure.code, failure.what()};
     } catch (const std::domain_error& domain_error) {

@@ -251,8 +251,7 @@ Json reduction_json(const BasisReduction& reduction) {
         for (const Rational& x : reduction.reduced[i]) row.push_back(rational_text(x));
         reduced.push_back(row);
     }
-    return Json{{"method", "LLL (FLINT fmpz_lll, delta 0.99, eta 0.51) of the exact basis"},
-                {"transform", transform},
+    return Json{{"transform", transform},
                 {"reduced_basis", reduced}};
 }
 

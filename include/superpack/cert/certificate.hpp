@@ -3,9 +3,11 @@
 // documents the format; this header is the producer's side of it.
 //
 // Every interval endpoint is written EXACTLY as "m*2^e" (integers m, e; "0" for zero), never
-// as a rounded decimal, so that the checker rereads bit for bit what was proved; a decimal
-// text sits beside it for people only.
+// as a rounded decimal; a decimal text sits beside it for people, which the checker renders
+// again and compares. The claim sentence is the checker's: the producer keeps no template of
+// it (certificate_document).
 #pragma once
+#include <stdexcept>
 #include <string>
 
 #include "superpack/problems/families.hpp"
@@ -13,7 +15,14 @@
 
 namespace superpack {
 
-constexpr int certificate_format_version = 1;
+constexpr int certificate_format_version = 2;
+
+// The independent checker rejected the certificate the producer assembled: a bug in one of
+// them (a logic error, so that no handler of runtime errors takes it for an undecided result).
+// Nothing is written; the CLI exits 1 with the message, which names the failing step.
+struct CertificateRejected : std::logic_error {
+    using std::logic_error::logic_error;
+};
 
 // {"lo": "m*2^e", "hi": "m*2^e", "decimal": "[lo, hi]"}: the interval's endpoints exactly.
 Json exact_interval_json(const DInterval& x);
@@ -25,8 +34,10 @@ Json exact_interval_json(const Ball& x);
 template <class Field>
 Json certificate_head(const std::string& command, const Field& field, long digits);
 
-// Assembles the document from its head, the claim {"kind", "text", "data"}, the exact
-// inputs and the proof tree.
+// Assembles the document from its head, the claim {"kind", "data"}, the exact inputs and the
+// proof tree, replays it with the checker (checker/verifier.hpp) in memory and sets claim.text
+// to the checker's rendering of the claim, so that a certificate written always verifies.
+// Throws CertificateRejected ("the checker rejects this certificate at PATH: ...") otherwise.
 Json certificate_document(Json head, Json claim, Json inputs, Json proof);
 
 // Runs the rounding self-test again (a library may have changed the mode since start-up) and

@@ -58,12 +58,10 @@ private:
         if (leaf.status == RootStatus::none) {
             for (std::size_t i = 0; i < values.size(); ++i)
                 if (!contains_zero(values[i]))
-                    return Json{{"kind", "excluded"}, {"box", box_json(leaf.piece)}, {"values", box_json(values)},
-                                {"reason", "component " + std::to_string(i) + " of f has one sign on the box"}};
-            return Json{{"kind", "krawczyk"}, {"status", "none"}, {"box", box_json(leaf.piece)}, {"reason", leaf.reason}};
+                    return Json{{"kind", "excluded"}, {"box", box_json(leaf.piece)}, {"values", box_json(values)}};
+            return Json{{"kind", "krawczyk"}, {"status", "none"}, {"box", box_json(leaf.piece)}};
         }
-        return Json{{"kind", "krawczyk"}, {"status", "unique"}, {"box", box_json(leaf.piece)},
-                    {"root", box_json(leaf.root)}, {"reason", leaf.reason}};
+        return Json{{"kind", "krawczyk"}, {"status", "unique"}, {"box", box_json(leaf.piece)}, {"root", box_json(leaf.root)}};
     }
 
     const F& f_;

@@ -1,8 +1,11 @@
-// The certificate of claim kind "family-lattice": the density of one family (C0, C1, O0, O1)
-// at one exact p, with the proof that the contact equations were solved as the paper asks
-// (Newton box and root-free [0, s) for C0/C1; the Krawczyk partition of the (q, s) box for O1).
+// The certificate of claim kind "family-lattice": phi = V_sb / |det B| of one family (C0, C1,
+// O0, O1) at one exact p, with the proof that the contact equations were solved as the paper
+// asks (Newton box and root-free [0, s) for C0/C1; the Krawczyk partition of the (q, s) box for
+// O1), and the lattice check (packing, overlapping or undecided) that decides whether phi is a
+// packing density.
 #pragma once
 #include "superpack/cert/certificate.hpp"
+#include "superpack/problems/family_lattice_check.hpp"
 
 namespace superpack {
 
@@ -12,6 +15,15 @@ namespace superpack {
 // Throws std::runtime_error unless lattice.status is certified.
 template <class I>
 Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p);
+
+// A lattice verdict as a claim states it: {"verdict": "packing", "contacts", "contact_vectors"},
+// {"verdict": "overlapping", "witness": {"coefficients", "norm"}} or {"verdict": "undecided"};
+// and its proof: the enumeration {"kind", "coefficient_bound", "contacts"} of a packing (the
+// checker enumerates the box on its own basis), null otherwise (a witness is its own proof).
+template <class I>
+Json lattice_verdict_json(const LatticeCheck<I>& check);
+template <class I>
+Json lattice_enumeration_json(const LatticeCheck<I>& check);
 
 // Throws std::runtime_error unless lattice.status is certified (only proofs are certified).
 template <class Field>
