@@ -193,13 +193,15 @@ void check_lattice_check(const Json& claim, Context& context) {
                         "the checker finds " + std::to_string(2 * contacts.size()) + " contacts");
         const Json& vectors = context.member(data, "contact_vectors", "claim.data");
         if (!vectors.is_array()) context.malformed("claim.data.contact_vectors", "expected an array");
-        std::set<Triple> stated;
+        std::set<Triple> stated, distinct;  // distinct: no vector listed twice in place of another
         for (std::size_t k = 0; k < vectors.size(); ++k) {
             Triple t = read_triple(context, vectors[k], "claim.data.contact_vectors[" + std::to_string(k) + "]");
+            distinct.insert(t);
             if (!canonical(t)) t = {-t[0], -t[1], -t[2]};
             stated.insert(t);
         }
-        context.require(stated == contacts && vectors.size() == 2 * contacts.size(), "claim.data.contact_vectors",
+        context.require(stated == contacts && distinct.size() == 2 * contacts.size() && vectors.size() == distinct.size(),
+                        "claim.data.contact_vectors",
                         "the stated contact vectors differ from the checker's");
         // The proof's list of decided contacts, each with its exact vector.
         const Json& decided = context.member(proof, "contacts", "proof");
