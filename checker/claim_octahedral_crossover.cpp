@@ -77,6 +77,9 @@ void check_octahedral_crossover(const Json& claim, Context& context) {
     const mpfr_prec_t precision = context.precision();
     const Real closed_form = log(integer(3, precision)) / log(integer(4, precision));
     check_encloses(context, context.member(data, "p", "claim.data"), "claim.data.p", closed_form);
+    // The closed form is named by the claim, so it must be the one checked here (found by the fuzz test).
+    context.require(context.string_at(data, "closed_form", "claim.data") == "ln3/ln4", "claim.data.closed_form",
+                    "the checker proves p = ln3/ln4, not another closed form");
 
     const Json& proof = context.member(document, "proof", "");
     if (context.string_at(proof, "kind", "proof") != "all") context.malformed("proof.kind", "expected \"all\"");

@@ -269,3 +269,14 @@ TEST_CASE("checker predicates never hold for an interval with a NaN end; widths 
     CHECK(width(one_plus(-5000)) < width(one_plus(-4000)));
     CHECK(width(one_plus(-5000)) > 0.0);
 }
+
+TEST_CASE("the octahedral crossover's closed form must be the one the checker proves (found by the fuzz test)") {
+    Document certificate = proof("crossover-octahedral");
+    REQUIRE(verify_document(certificate).verdict == Verdict::valid);
+    certificate["claim"]["data"]["closed_form"] = "1";
+    const auto forged = verify_document(certificate);
+    CHECK(forged.verdict == Verdict::invalid);
+    CHECK(forged.path == "claim.data.closed_form");
+    certificate["claim"]["data"].erase("closed_form");
+    CHECK(verify_document(certificate).verdict == Verdict::malformed);
+}
