@@ -150,7 +150,7 @@ std::string check_cubic_crossover(const Json& claim, Context& context) {
                 const Real next_image = mid - crossover_at(known, mid).value / crossover_at(known, current).slope;
                 Real next(precision);
                 context.require(intersect(next, next_image, current), path, "a Newton iterate lost the root (inconsistent)");
-                const double before = width(current), after = width(next);
+                const Width before = width(current), after = width(next);
                 current = next;
                 if (after == 0.0 || after >= 0.75 * before) break;
             }

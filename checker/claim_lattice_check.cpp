@@ -241,9 +241,10 @@ std::string check_lattice_check(const Json& claim, Context& context) {
         const Json& vectors = context.member(data, "contact_vectors", "claim.data");
         if (!vectors.is_array()) context.malformed("claim.data.contact_vectors", "expected an array");
         // Stated in the given basis: the checker's contacts t (in R) are t U there.
-        std::set<Triple> stated, given;
+        std::set<Triple> stated, given, distinct;  // distinct: no vector listed twice in place of another
         for (std::size_t k = 0; k < vectors.size(); ++k) {
             Triple t = read_triple(context, vectors[k], "claim.data.contact_vectors[" + std::to_string(k) + "]");
+            distinct.insert(t);
             if (!canonical(t)) t = {-t[0], -t[1], -t[2]};
             stated.insert(t);
         }
@@ -252,7 +253,8 @@ std::string check_lattice_check(const Json& claim, Context& context) {
             if (!canonical(u)) u = {-u[0], -u[1], -u[2]};
             given.insert(u);
         }
-        context.require(stated == given && vectors.size() == 2 * contacts.size(), "claim.data.contact_vectors",
+        context.require(stated == given && distinct.size() == 2 * contacts.size() && vectors.size() == distinct.size(),
+                        "claim.data.contact_vectors",
                         "the stated contact vectors differ from the checker's");
         // The proof's list of decided contacts, each with its exact vector.
         const Json& decided = context.member(proof, "contacts", "proof");

@@ -65,7 +65,7 @@ public:
         for (int round = 0; tight && round < 8; ++round) {
             const KrawczykReplay again = replay_krawczyk(system, root, 80);
             if (again.status != ReplayStatus::unique) break;
-            const double before = width(root[0]) + width(root[1]), after = width(again.root[0]) + width(again.root[1]);
+            const Width before = width(root[0]) + width(root[1]), after = width(again.root[0]) + width(again.root[1]);
             root = again.root;
             if (!(after < 0.9 * before)) break;
         }

@@ -114,13 +114,15 @@ FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, c
                     "the checker finds " + std::to_string(2 * contacts.size()) + " contacts");
     const Json& vectors = context.member(stated, "contact_vectors", stated_path);
     if (!vectors.is_array()) context.malformed(stated_path + ".contact_vectors", "expected an array");
-    std::set<Triple> stated_contacts;
+    std::set<Triple> stated_contacts, distinct;  // distinct: no vector listed twice in place of another
     for (std::size_t k = 0; k < vectors.size(); ++k) {
         Triple t = read_triple(context, vectors[k], stated_path + ".contact_vectors[" + std::to_string(k) + "]");
+        distinct.insert(t);
         if (!canonical(t)) t = {-t[0], -t[1], -t[2]};
         stated_contacts.insert(t);
     }
-    context.require(stated_contacts == contacts && vectors.size() == 2 * contacts.size(), stated_path + ".contact_vectors",
+    context.require(stated_contacts == contacts && distinct.size() == 2 * contacts.size() && vectors.size() == distinct.size(),
+                    stated_path + ".contact_vectors",
                     "the stated contact vectors differ from the checker's");
     const Json& listed = context.member(enumeration, "contacts", enumeration_path);
     if (!listed.is_array()) context.malformed(enumeration_path + ".contacts", "expected an array");

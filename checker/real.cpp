@@ -1,6 +1,7 @@
 #include "real.hpp"
 
 #include <algorithm>
+#include <ostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -198,21 +199,55 @@ bool intersect(Real& result, const Real& a, const Real& b) {
 bool positive(const Real& x) { return mpfr_sgn(x.lo()) > 0; }
 bool negative(const Real& x) { return mpfr_sgn(x.hi()) < 0; }
 bool excludes_zero(const Real& x) { return positive(x) || negative(x); }
-bool less(const Real& a, const Real& b) { return mpfr_cmp(a.hi(), b.lo()) < 0; }
+// The mpfr_*_p comparisons are false when an end is NaN (mpfr_cmp would call it equal), so
+// that no predicate can hold for an interval that arithmetic has left undefined.
+bool less(const Real& a, const Real& b) { return mpfr_less_p(a.hi(), b.lo()) != 0; }
 bool subset(const Real& inner, const Real& outer) {
-    return mpfr_cmp(outer.lo(), inner.lo()) <= 0 && mpfr_cmp(inner.hi(), outer.hi()) <= 0;
+    return mpfr_lessequal_p(outer.lo(), inner.lo()) && mpfr_lessequal_p(inner.hi(), outer.hi());
 }
 bool interior_subset(const Real& inner, const Real& outer) {
-    return mpfr_cmp(outer.lo(), inner.lo()) < 0 && mpfr_cmp(inner.hi(), outer.hi()) < 0;
+    return mpfr_less_p(outer.lo(), inner.lo()) && mpfr_less_p(inner.hi(), outer.hi());
 }
-double width(const Real& x) {
-    mpfr_t w;
-    mpfr_init2(w, 53);
-    mpfr_sub(w, x.hi(), x.lo(), MPFR_RNDU);
-    const double result = mpfr_get_d(w, MPFR_RNDU);
-    mpfr_clear(w);
+Width::Width(double x) {
+    mpfr_init2(value_, 53);
+    mpfr_set_d(value_, x, MPFR_RNDU);
+}
+Width::Width(const Width& other) {
+    mpfr_init2(value_, 53);
+    mpfr_set(value_, other.value_, MPFR_RNDU);
+}
+Width& Width::operator=(const Width& other) {
+    mpfr_set(value_, other.value_, MPFR_RNDU);
+    return *this;
+}
+Width::~Width() { mpfr_clear(value_); }
+
+Width width(const Real& x) {
+    Width result;
+    mpfr_sub(result.get(), x.hi(), x.lo(), MPFR_RNDU);
     return result;
 }
+Width operator+(const Width& a, const Width& b) {
+    Width result;
+    mpfr_add(result.get(), a.get(), b.get(), MPFR_RNDU);
+    return result;
+}
+Width operator*(double factor, const Width& w) {
+    Width result;
+    mpfr_mul_d(result.get(), w.get(), factor, MPFR_RNDU);
+    return result;
+}
+bool operator<(const Width& a, const Width& b) { return mpfr_less_p(a.get(), b.get()) != 0; }
+bool operator<=(const Width& a, const Width& b) { return mpfr_lessequal_p(a.get(), b.get()) != 0; }
+bool operator>(const Width& a, const Width& b) { return mpfr_greater_p(a.get(), b.get()) != 0; }
+bool operator>=(const Width& a, const Width& b) { return mpfr_greaterequal_p(a.get(), b.get()) != 0; }
+bool operator==(const Width& a, const Width& b) { return mpfr_equal_p(a.get(), b.get()) != 0; }
+std::ostream& operator<<(std::ostream& out, const Width& w) {
+    char digits[64];
+    mpfr_snprintf(digits, sizeof digits, "%.6RUg", w.get());
+    return out << digits;
+}
+
 double middle(const Real& x) {
     mpfr_t center;
     mpfr_init2(center, x.precision());

@@ -6,6 +6,7 @@
 #include <gmpxx.h>
 #include <mpfi.h>
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -70,7 +71,31 @@ bool excludes_zero(const Real& x);
 bool less(const Real& a, const Real& b);
 bool subset(const Real& inner, const Real& outer);           // inner within outer
 bool interior_subset(const Real& inner, const Real& outer);  // inner within the interior of outer
-double width(const Real& x);  // for stopping rules only, rounded up
+// The width of an interval, for stopping rules only: 53 bits rounded up, with MPFR's exponent
+// range. A double does not do: below 2^-1074 every width rounds up to the same subnormal, so a
+// rule "stop when an iterate no longer shrinks" stopped at about 320 digits, whatever the
+// precision, and left the checker's boxes wider than those of a 700-digit certificate.
+class Width {
+public:
+    Width(double x = 0);  // exact
+    Width(const Width& other);
+    Width& operator=(const Width& other);
+    ~Width();
+    mpfr_srcptr get() const { return value_; }
+    mpfr_ptr get() { return value_; }
+
+private:
+    mpfr_t value_;
+};
+Width width(const Real& x);
+Width operator+(const Width& a, const Width& b);  // rounded up
+Width operator*(double factor, const Width& w);   // rounded up
+bool operator<(const Width& a, const Width& b);
+bool operator<=(const Width& a, const Width& b);
+bool operator>(const Width& a, const Width& b);
+bool operator>=(const Width& a, const Width& b);
+bool operator==(const Width& a, const Width& b);
+std::ostream& operator<<(std::ostream& out, const Width& w);  // 6 digits, for messages
 double middle(const Real& x);  // for preconditioners only
 
 std::string text(const Real& x);  // "[lo, hi]" to 20 digits, for messages

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "checker/limits.hpp"
+
 namespace superpack_checker {
 
 namespace {
@@ -44,9 +46,9 @@ Real exact_double(double x, mpfr_prec_t precision) {
 }
 
 // The sum of the widths: a stopping rule that sees any component shrink.
-double total_width(const Box& box) {
-    double sum = 0;
-    for (const Real& x : box) sum += width(x);
+Width total_width(const Box& box) {
+    Width sum;
+    for (const Real& x : box) sum = sum + width(x);
     return sum;
 }
 
@@ -101,7 +103,7 @@ KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_ite
             next.push_back(meet);
         }
         exists = exists || interior;
-        const double before = total_width(current), after = total_width(next);
+        const Width before = total_width(current), after = total_width(next);
         current = next;
         if (exists && (after == 0.0 || after >= 0.75 * before)) break;
         if (!exists && after >= before) {
@@ -155,14 +157,18 @@ Real replay_newton(Context& context, const std::function<Real(const Real&)>& f,
         const Real next_image = mid - f(mid) / derivative(current);
         Real next(box.precision());
         context.require(intersect(next, next_image, current), path, "a Newton iterate lost the root (inconsistent)");
-        const double before = width(current), after = width(next);
+        const Width before = width(current), after = width(next);
         current = next;
         if (after == 0.0 || after >= 0.75 * before) break;
     }
     return current;
 }
 
-Box check_partition(Context& context, const Json& node, const std::string& path, const LeafCheck& leaf) {
+namespace {
+
+Box check_split_tree(Context& context, const Json& node, const std::string& path, const LeafCheck& leaf, int depth) {
+    if (depth > max_proof_depth)
+        context.malformed(path, "a proof tree deeper than " + std::to_string(max_proof_depth) + " splits (max_proof_depth)");
     const Box box = context.box(context.member(node, "box", path), path + ".box");
     if (context.string_at(node, "kind", path) != "split") {
         context.current_step = path;
@@ -177,8 +183,8 @@ Box check_partition(Context& context, const Json& node, const std::string& path,
         context.malformed(path + ".dimension", "not a dimension of the box");
     const std::size_t dimension = dimension_json.get<std::size_t>();
     const std::string left_path = path + ".cases[0]", right_path = path + ".cases[1]";
-    const Box left = check_partition(context, cases[0], left_path, leaf);
-    const Box right = check_partition(context, cases[1], right_path, leaf);
+    const Box left = check_split_tree(context, cases[0], left_path, leaf, depth + 1);
+    const Box right = check_split_tree(context, cases[1], right_path, leaf, depth + 1);
     context.require(left.size() == box.size() && right.size() == box.size(), path, "children of another dimension");
     // The two children cover the box: along `dimension` they reach its ends and meet (or
     // overlap), along the others each holds the box's whole side.
@@ -195,6 +201,12 @@ Box check_partition(Context& context, const Json& node, const std::string& path,
         context.require(subset(box[k], right[k]), right_path + ".box", "the case does not hold its parent's side");
     }
     return box;
+}
+
+}  // namespace
+
+Box check_partition(Context& context, const Json& node, const std::string& path, const LeafCheck& leaf) {
+    return check_split_tree(context, node, path, leaf, 0);
 }
 
 void check_root_leaf(Context& context, const System& system, const Json& leaf, const Box& box,

@@ -29,7 +29,7 @@ Real newton_from_box(Context& context, const CubicEquation& equation, const Real
         exists = exists || interior_subset(image, current);
         Real next(box.precision());
         context.require(intersect(next, image, current), path + ".box", "no root in the box (Newton image disjoint)");
-        const double before = width(current), after = width(next);
+        const Width before = width(current), after = width(next);
         current = next;
         if (after == 0.0 || after >= 0.75 * before) break;
     }
@@ -66,7 +66,7 @@ Real refine_known_root(const CubicEquation& equation, const Real& box) {
         const Real image = center - equation.value(center) / equation.derivative(current);
         Real next(box.precision());
         if (!intersect(next, image, current)) throw std::domain_error("a Newton iterate lost the root of the contact equation");
-        const double before = width(current), after = width(next);
+        const Width before = width(current), after = width(next);
         current = next;
         if (after == 0.0 || after >= 0.75 * before) break;
     }

@@ -36,8 +36,12 @@ struct VerifyReport {
     mpfr_prec_t precision = 0;
 };
 
+// A document, the text of a file, or a file: whatever cannot be read within the limits of
+// checker/limits.hpp (NOTES.md 8.8), is not JSON, or is not a regular file is malformed, with
+// one line saying why (and the path in the document where that applies).
 VerifyReport verify_document(const Json& document);
-VerifyReport verify_file(const std::string& path);  // unreadable or unparsable: malformed
+VerifyReport verify_text(const std::string& text);
+VerifyReport verify_file(const std::string& path);
 
 // Thrown inside a claim checker; the verifier turns it into the report.
 struct Rejection {

@@ -1,0 +1,45 @@
+// How much of a certificate the checker reads: every limit is a named constant here, stated in
+// NOTES.md 8.8 and enforced with a one-line rejection that names it (an unreadable file, exit 2).
+// The limits keep `superpack verify` safe on hostile input: its stack depth, memory and running
+// time follow the size of the file and the precision the file asks for, both bounded here.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace superpack_checker {
+
+// The largest certificate file read, in bytes. The largest one in proofs/ is below 1 MB; a
+// 100000-digit certificate adds about 0.2 MB per exact interval. The parsed document takes at
+// most about 35 bytes of memory per byte of file (a file of empty objects), so at most 0.6 GB.
+constexpr std::uintmax_t max_file_bytes = std::uintmax_t{16} << 20;
+
+// Nesting of JSON arrays and objects (the document itself is level 1). Certificates in proofs/
+// reach 22; the producer's partition trees are at most 201 splits deep (certificate_partition.hpp),
+// two levels each. Checked while parsing, before a deeper value is built.
+constexpr std::size_t max_json_depth = 1024;
+// Nesting of "split" nodes in a proof tree (check_partition), with the same margin.
+constexpr int max_proof_depth = 256;
+
+// --digits of the producer: 1 to 100000 (the documented limit of the command line).
+constexpr long max_digits = 100000;
+// binary64 intervals: 53 bits, written as 15 digits.
+constexpr long binary64_bits = 53;
+constexpr long binary64_digits = 15;
+// Arb balls: the producer's bits_for_digits, floor(digits * 3.3220) + 33 (log2 10 < 3.3220, and
+// 32 guard bits), computed exactly in integers.
+constexpr long arb_bits_for_digits(long digits) { return digits * 33220 / 10000 + 33; }
+constexpr long max_bits = arb_bits_for_digits(max_digits);
+// The checker works this far above the producer, and never below min_precision.
+constexpr long guard_bits = 64;
+constexpr long min_precision = 128;
+constexpr long max_precision = max_bits + guard_bits;
+
+// Exact numbers. A mantissa is exact at the checker's precision, so it has at most
+// max_precision bits, that is max_precision * log10(2) < max_precision * 0.30103 decimal
+// digits (plus one for rounding); an exponent |e| < 10^8 keeps every value within MPFR's
+// exponent range (2^30) with room for the arithmetic; rationals are the short inputs (p, a basis).
+constexpr std::size_t max_mantissa_digits = static_cast<std::size_t>(max_precision) * 30103 / 100000 + 1;
+constexpr std::size_t max_exponent_digits = 8;
+constexpr std::size_t max_rational_characters = 10000;
+
+}  // namespace superpack_checker
