@@ -27,7 +27,7 @@ int main() {
     const Rational p = parse_rational("1.15");
     bool certified = true;
     const double reference = best_seconds(20, [&] {
-        certified = certified && enclose_family(Family::C0, p, field).status == FamilyStatus::certified;
+        certified = certified && enclose_family(Family::C0, p, field).status == Outcome::proved;
     });
     double width = 1;
     const double measured = best_seconds(5, [&] {

@@ -62,12 +62,12 @@ int main() {
     double width30 = 1, width_binary64 = 1;
     const double certified30 = mean_seconds(200, [&] {
         const auto lattice = enclose_family(Family::C0, p, thirty);
-        certified = certified && lattice.status == FamilyStatus::certified;
+        certified = certified && lattice.status == Outcome::proved;
         width30 = width_upper(*lattice.phi);
     });
     const double binary64 = mean_seconds(1000, [&] {
         const auto lattice = enclose_family(Family::C0, p, DoubleField{});
-        certified = certified && lattice.status == FamilyStatus::certified;
+        certified = certified && lattice.status == Outcome::proved;
         width_binary64 = width_upper(*lattice.phi);
     });
     const double reference = mpmath_seconds();

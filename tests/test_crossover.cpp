@@ -62,8 +62,8 @@ TEMPLATE_TEST_CASE("at p = 1 both cubic families are FCC: s in closed form, phi 
     const auto one = field.integer(1);
     const auto c0 = enclose_density_slope(Family::C0, one);
     const auto c1 = enclose_density_slope(Family::C1, one);
-    REQUIRE(c0.status == FamilyStatus::certified);
-    REQUIRE(c1.status == FamilyStatus::certified);
+    REQUIRE(c0.status == Outcome::proved);
+    REQUIRE(c1.status == Outcome::proved);
     const auto root2 = sqrt(field.integer(2));
     CHECK(overlaps(c0.parameters[0].value, (field.integer(2) - root2) / field.integer(4)));
     CHECK(overlaps(c1.parameters[0].value, root2 / field.integer(6)));
@@ -81,7 +81,7 @@ TEMPLATE_TEST_CASE("family slopes by the implicit function theorem match mpmath'
         for (const auto& [p_text, value] : values.items()) {
             INFO(name << " at p = " << p_text);
             const auto slope = enclose_density_slope(family, field.rational(parse_rational(p_text)));
-            REQUIRE(slope.status == FamilyStatus::certified);
+            REQUIRE(slope.status == Outcome::proved);
             CHECK(meets(*slope.slope, value.template get<std::string>()));
             CHECK(width_upper(*slope.slope) < 1e-12);
         }
@@ -94,8 +94,8 @@ TEMPLATE_TEST_CASE("near p = 1 and at p = 10: g = phi_C1 - phi_C0 has the certif
     const auto piece = from_doubles(field.integer(0), 1.0, 1.0 + 1.0 / 8192);
     const auto c0 = enclose_density_slope(Family::C0, piece);
     const auto c1 = enclose_density_slope(Family::C1, piece);
-    REQUIRE(c0.status == FamilyStatus::certified);
-    REQUIRE(c1.status == FamilyStatus::certified);
+    REQUIRE(c0.status == Outcome::proved);
+    REQUIRE(c1.status == Outcome::proved);
     CHECK(certainly_negative(*c1.slope - *c0.slope));
     for (const auto& [p_text, value] : crossover_reference()["difference"].items()) {
         INFO("p = " << p_text);
@@ -112,13 +112,13 @@ TEMPLATE_TEST_CASE("crossover octahedral: the root of Eq. (6) is ln3/ln4 and O0 
     const auto crossover = certify_octahedral_crossover(field, 30);
     INFO(crossover.message);
     REQUIRE(crossover.certified);
-    CHECK(crossover.closed_form == Agreement::agree);
+    CHECK(crossover.closed_form == Outcome::proved);
     CHECK(meets(crossover.newton->box, reference_text("eq6_root")));
     CHECK(meets(*crossover.p, reference_text("p_o")));
     CHECK(meets(*crossover.phi, reference_text("phi_o")));
     CHECK(meets(*crossover.o1_phi, reference_text("phi_o")));
     CHECK(crossover.same_lattice);
-    CHECK(crossover.densities_meet == Agreement::agree);
+    CHECK(crossover.densities_meet == Outcome::proved);
     // |det| = 4 for both lattices at p*_o.
     CHECK(overlaps(abs(*crossover.o1_determinant), field.integer(4)));
     require_partition(crossover.pieces, 0.5, 1.0);
@@ -141,14 +141,14 @@ TEST_CASE("printed decimals are read as truncated and as rounded") {
     const Ball p_c = field.rational(parse_rational("1.15087695"));
     // The paper's 1.1509... is p*_c rounded, not truncated.
     const auto check = check_printed(p_c, "1.1509");
-    CHECK(check.truncated == Agreement::disagree);
-    CHECK(check.rounded == Agreement::agree);
+    CHECK(check.truncated == Outcome::refuted);
+    CHECK(check.rounded == Outcome::proved);
     const auto negative = check_printed(field.rational(parse_rational("-0.029412")), "-0.02941");
-    CHECK(negative.truncated == Agreement::agree);
-    CHECK(check_printed(field.rational(parse_rational("-0.029408")), "-0.02941").truncated == Agreement::disagree);
+    CHECK(negative.truncated == Outcome::proved);
+    CHECK(check_printed(field.rational(parse_rational("-0.029408")), "-0.02941").truncated == Outcome::refuted);
     // An enclosure straddling an end of the reading is undecided, not rounded to a verdict.
     const Ball straddle = hull(field.rational(parse_rational("1.15089")), field.rational(parse_rational("1.15091")));
-    CHECK(check_printed(straddle, "1.1509").truncated == Agreement::undecided);
+    CHECK(check_printed(straddle, "1.1509").truncated == Outcome::undecided);
 }
 
 TEST_CASE("crossover and slopes on the command line: one JSON document, exit codes") {

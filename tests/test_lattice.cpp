@@ -62,7 +62,7 @@ TEMPLATE_TEST_CASE("the published families at the acceptance points: 12 contacts
         const Rational p = parse_rational(p_text);
         const auto lattice = enclose_family(family, p, field);
         const auto check = check_family_lattice(lattice, field.rational(p));
-        CHECK(check.verdict == Verdict::admissible);
+        CHECK(check.verdict == Outcome::proved);
         CHECK(check.contacts() == 12);
         CHECK(check.near_contacts.empty());
         REQUIRE(check.min_norm);
@@ -86,7 +86,7 @@ TEMPLATE_TEST_CASE("C0 and C1 at p = 10^4 and 10^6: packings with the family's 1
             INFO(to_string(family) << " at p = " << p_text);
             const Rational p = parse_rational(p_text);
             const auto check = check_family_lattice(enclose_family(family, p, field), field.rational(p));
-            CHECK(check.verdict == Verdict::admissible);
+            CHECK(check.verdict == Outcome::proved);
             CHECK(check.contacts() == 12);
             REQUIRE(check.min_norm);
             CHECK(meets(*check.min_norm, "2"));
@@ -96,7 +96,7 @@ TEMPLATE_TEST_CASE("C0 and C1 at p = 10^4 and 10^6: packings with the family's 1
 TEMPLATE_TEST_CASE("Minkowski's octahedron lattice at p = 1/2: 14 contacts, decided exactly", "", Binary64, Arb128) {
     const TestType field;
     const auto check = check_exact_lattice(parse_basis(minkowski), Rational(1, 2), field);
-    CHECK(check.verdict == Verdict::admissible);
+    CHECK(check.verdict == Outcome::proved);
     CHECK(check.contacts() == 14);
     const auto& contacts = check.contact_vectors;
     CHECK(std::set<Coefficients>(contacts.begin(), contacts.end()) == pairs(lattice_data()["minkowski_short"]));
@@ -106,13 +106,13 @@ TEMPLATE_TEST_CASE("FCC at p = 1, scaled above and below the sphere contact dist
     const TestType field;
     const Rational p(1);
     const auto packing = check_exact_lattice(parse_basis("3/2,3/2,0; 3/2,0,3/2; 0,3/2,3/2"), p, field);
-    CHECK(packing.verdict == Verdict::admissible);
+    CHECK(packing.verdict == Outcome::proved);
     CHECK(packing.contacts() == 0);
     REQUIRE(packing.min_norm);
     CHECK(meets(*packing.min_norm, lattice_data()["fcc_3_2_min_norm"]));
     const Basis<Rational> tight = parse_basis("7/5,7/5,0; 7/5,0,7/5; 0,7/5,7/5");
     const auto overlap = check_exact_lattice(tight, p, field);
-    CHECK(overlap.verdict == Verdict::overlapping);
+    CHECK(overlap.verdict == Outcome::refuted);
     REQUIRE(overlap.witness);
     CHECK(meets(overlap.witness->norm, lattice_data()["fcc_7_5_min_norm"]));
     recheck_witness(tight, p, *overlap.witness);
@@ -123,12 +123,12 @@ TEMPLATE_TEST_CASE("the cubic lattice 2Z^3: 6 contacts, exactly, for integer and
     for (const std::string p_text : {"1", "3", "0.85", "7/9"}) {
         INFO("p = " << p_text);
         const auto check = check_exact_lattice(parse_basis("2,0,0; 0,2,0; 0,0,2"), parse_rational(p_text), field);
-        CHECK(check.verdict == Verdict::admissible);
+        CHECK(check.verdict == Outcome::proved);
         CHECK(check.contacts() == 6);
     }
     // (1, 1, 0) in the lattice spanned by (1,1,0): at p = 1/2 its norm is 2 (equal magnitudes rule).
     const auto l1 = check_exact_lattice(parse_basis("1,1,0; 0,2,0; 0,0,2"), Rational(1, 2), field);
-    CHECK(l1.verdict == Verdict::admissible);
+    CHECK(l1.verdict == Outcome::proved);
     // Lattice {(a, a + 2b, 2c)}: norm-1 distance 2 is reached by (1,1,0), (1,-1,0), (0,2,0), (0,0,2),
     // (2,0,0) and their negatives, and by nothing shorter.
     CHECK(l1.contacts() == 10);
@@ -138,11 +138,11 @@ TEST_CASE("a near contact is undecided in binary64 and decided with more bits") 
     // (2 + 10^-30, 0, 0) has norm 2 + 10^-30 > 2: binary64 cannot separate it from 2.
     const std::string basis = "2.000000000000000000000000000001,0,0; 0,2,0; 0,0,2";
     const auto coarse = check_exact_lattice(parse_basis(basis), Rational(1), DoubleField{});
-    CHECK(coarse.verdict == Verdict::undecided);
+    CHECK(coarse.verdict == Outcome::undecided);
     REQUIRE(coarse.near_contacts.size() == 1);
     CHECK(coarse.near_contacts[0].coefficients == Coefficients{1, 0, 0});
     const auto fine = check_exact_lattice(parse_basis(basis), Rational(1), BallField{256});
-    CHECK(fine.verdict == Verdict::admissible);
+    CHECK(fine.verdict == Outcome::proved);
     CHECK(fine.contacts() == 4);
 }
 
@@ -150,7 +150,7 @@ TEMPLATE_TEST_CASE("a vector of norm 1.9 at p = 2 is a witness of overlap", "", 
     const TestType field;
     const Basis<Rational> skew = parse_basis("3.9,2,0; -2,-2,0; 0,0,2");
     const auto check = check_exact_lattice(skew, Rational(2), field);
-    CHECK(check.verdict == Verdict::overlapping);
+    CHECK(check.verdict == Outcome::refuted);
     REQUIRE(check.witness);
     const auto& shortest = lattice_data()["skew_p2_shortest"];
     CHECK(check.witness->coefficients == Coefficients{shortest[0], shortest[1], shortest[2]});
@@ -165,7 +165,7 @@ TEMPLATE_TEST_CASE("the published O1 lattice overlaps at p = 0.6 (erratum), witn
     const Rational p = parse_rational("0.6");
     const auto lattice = enclose_family(Family::O1, p, field);
     const auto check = check_family_lattice(lattice, field.rational(p));
-    CHECK(check.verdict == Verdict::overlapping);
+    CHECK(check.verdict == Outcome::refuted);
     REQUIRE(check.witness);
     CHECK(check.witness->coefficients == Coefficients{1, -1, -1});
     CHECK(meets(check.witness->norm, lattice_data()["o1_p0.6_witness_norm"]));

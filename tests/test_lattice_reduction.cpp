@@ -84,14 +84,14 @@ TEMPLATE_TEST_CASE("a flat and a skewed basis are decided, in the given basis, a
         INFO("p = " << p_text);
         const Rational p = parse_rational(p_text);
         const auto overlap = check_exact_lattice(flat, p, field);
-        CHECK(overlap.verdict == Verdict::overlapping);
+        CHECK(overlap.verdict == Outcome::refuted);
         REQUIRE(overlap.witness);
         CHECK(overlap.witness->coefficients == Coefficients{0, 0, 1});  // e3 = (0, 0, 0.001)
         CHECK(meets(overlap.witness->norm, "0.001"));
         REQUIRE(overlap.min_norm);
         CHECK(meets(*overlap.min_norm, "0.001"));
         const auto packing = check_exact_lattice(skewed, p, field);
-        CHECK(packing.verdict == Verdict::admissible);
+        CHECK(packing.verdict == Outcome::proved);
         CHECK(packing.contacts() == 6);
         // +-2 e_i: e1, e2 - 1000 e1 and e3 of the given basis.
         CHECK(with_signs(packing.contact_vectors) == with_signs({{1, 0, 0}, {-1000, 1, 0}, {0, 0, 1}}));
@@ -104,13 +104,13 @@ TEMPLATE_TEST_CASE("random unimodular changes of basis keep the verdict and the 
     struct Known {
         const char* basis;
         const char* p;
-        Verdict verdict;
+        Outcome verdict;
         std::size_t contacts;
     };
-    for (const Known& known : {Known{"2/3,2/3,-2/3; -1/3,4/3,-1/3; 1/3,-1/3,-4/3", "1/2", Verdict::admissible, 14},
-                               Known{"2,0,0; 0,2,0; 0,0,2", "2", Verdict::admissible, 6},
-                               Known{"1,1,0; 0,2,0; 0,0,2", "1/2", Verdict::admissible, 10},
-                               Known{"7/5,7/5,0; 7/5,0,7/5; 0,7/5,7/5", "1", Verdict::overlapping, 0}}) {
+    for (const Known& known : {Known{"2/3,2/3,-2/3; -1/3,4/3,-1/3; 1/3,-1/3,-4/3", "1/2", Outcome::proved, 14},
+                               Known{"2,0,0; 0,2,0; 0,0,2", "2", Outcome::proved, 6},
+                               Known{"1,1,0; 0,2,0; 0,0,2", "1/2", Outcome::proved, 10},
+                               Known{"7/5,7/5,0; 7/5,0,7/5; 0,7/5,7/5", "1", Outcome::refuted, 0}}) {
         const Basis<Rational> basis = parse_basis(known.basis);
         const Rational p = parse_rational(known.p);
         const auto reference = check_exact_lattice(basis, p, field);
@@ -127,7 +127,7 @@ TEMPLATE_TEST_CASE("random unimodular changes of basis keep the verdict and the 
             std::set<Coefficients> original;
             for (const Coefficients& c : check.contact_vectors) original.insert(given_coefficients(c, u));
             CHECK(original == with_signs(reference.contact_vectors));
-            if (known.verdict == Verdict::overlapping) {
+            if (known.verdict == Outcome::refuted) {
                 REQUIRE(check.witness);
                 CHECK(meets(check.witness->norm, "1.979898987322333068322364213893577309997540625527727"));  // 7/5 sqrt 2
             }
@@ -157,7 +157,7 @@ TEMPLATE_TEST_CASE("C0 at p = 2 after a unimodular change of basis: a packing wi
             const Coefficients original = representative(given_coefficients(c, u));
             return std::find(identities.begin(), identities.end(), original) != identities.end();
         });
-        CHECK(check.verdict == Verdict::admissible);
+        CHECK(check.verdict == Outcome::proved);
         CHECK(check.contacts() == 12);
     }
 }

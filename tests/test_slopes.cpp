@@ -20,14 +20,14 @@ TEMPLATE_TEST_CASE("slopes at p = 1: certified a_-, a_+ and the paper's closed f
     CHECK(meets(*slopes.closed_minus, reference_text("closed_a_minus")));
     CHECK(meets(*slopes.closed_plus, reference_text("closed_a_plus")));
     // a_-: the paper's closed form and its printed -0.02941... agree with the certified slope.
-    CHECK(slopes.minus_vs_closed == Agreement::agree);
-    CHECK(slopes.minus_printed.truncated == Agreement::agree);
+    CHECK(slopes.minus_vs_closed == Outcome::proved);
+    CHECK(slopes.minus_printed.truncated == Outcome::proved);
     // a_+: the closed form (-2.606...) and the printed 0.3555... both disagree with the
     // certified slope 0.12366..., and with each other.
-    CHECK(slopes.plus_vs_closed == Agreement::disagree);
-    CHECK(slopes.plus_printed.truncated == Agreement::disagree);
-    CHECK(slopes.plus_printed.rounded == Agreement::disagree);
-    CHECK(slopes.closed_plus_printed.truncated == Agreement::disagree);
+    CHECK(slopes.plus_vs_closed == Outcome::refuted);
+    CHECK(slopes.plus_printed.truncated == Outcome::refuted);
+    CHECK(slopes.plus_printed.rounded == Outcome::refuted);
+    CHECK(slopes.closed_plus_printed.truncated == Outcome::refuted);
 }
 
 TEST_CASE("slopes at two precisions overlap") {

@@ -28,7 +28,7 @@ std::optional<Json> o1_point_refutation(const AuditPiece& piece) {
     const LatticeCheck<DInterval> check = check_lattice(o1_basis(root.box[0], root.box[1], p), p, [&](const Coefficients& c) {
         return std::find(identities.begin(), identities.end(), c) != identities.end();
     });
-    if (check.verdict != Verdict::overlapping) return std::nullopt;
+    if (check.verdict != Outcome::refuted) return std::nullopt;
     Json verdict = lattice_verdict_json(check);
     verdict["verdict"] = "overlapping_at_point";
     verdict["at"] = rational_text(middle);
@@ -41,7 +41,7 @@ template <class Field>
 Json family_lattice_check_certificate(const FamilyLattice<typename Field::Interval>& lattice,
                                       const LatticeCheck<typename Field::Interval>& check, const Rational& p,
                                       const Field& field, long digits) {
-    if (check.verdict == Verdict::undecided) throw std::runtime_error("certificate: the lattice check is undecided");
+    if (check.verdict == Outcome::undecided) throw std::runtime_error("certificate: the lattice check is undecided");
     const std::string family = to_string(lattice.family);
     Json data = lattice_verdict_json(check);
     data["family"] = family;
@@ -66,8 +66,8 @@ Json audit_certificate(const AuditResult& result) {
         const Json p{{"lo", rational_text(piece.lo)}, {"hi", rational_text(piece.hi)}};
         const DInterval p_interval = hull(field.rational(piece.lo), field.rational(piece.hi));
         Json parameters(nullptr), lattice(nullptr), verdict;
-        const bool certified = piece.lattice && piece.lattice->status == FamilyStatus::certified;
-        bool decided = certified && piece.check && piece.check->verdict != Verdict::undecided;
+        const bool certified = piece.lattice && piece.lattice->status == Outcome::proved;
+        bool decided = certified && piece.check && piece.check->verdict != Outcome::undecided;
         const bool linked_before = linked;
         if (family == Family::O1) {
             if (certified)

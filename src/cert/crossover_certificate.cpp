@@ -19,7 +19,7 @@ const I& certified(const std::optional<I>& x, const char* what) {
 // first Newton step for the record; the checker adds that f is increasing on [0, box].
 template <class I>
 Json smallest_root_json(Family family, const FamilyLattice<I>& lattice, const I& p) {
-    if (lattice.status != FamilyStatus::certified || lattice.search.empty())
+    if (lattice.status != Outcome::proved || lattice.search.empty())
         throw std::runtime_error(std::string("certificate: ") + to_string(family) + " is not certified");
     const I& box = lattice.search.back().piece[0];
     auto equation = [&](const auto& s) { return cubic_equation(family, s, p); };
@@ -159,7 +159,7 @@ namespace {
 
 template <class I>
 Json family_slope_json(const DensitySlope<I>& slope, const char* parameter, const I& parameter_slope) {
-    if (slope.status != FamilyStatus::certified || slope.parameters.empty())
+    if (slope.status != Outcome::proved || slope.parameters.empty())
         throw std::runtime_error(std::string("certificate: the slope of ") + to_string(slope.family) + " is not certified");
     return Json{{parameter, exact_interval_json(slope.parameters.front().value)},
                 {std::string("d") + parameter + "_dp", exact_interval_json(parameter_slope)},
@@ -169,7 +169,7 @@ Json family_slope_json(const DensitySlope<I>& slope, const char* parameter, cons
 
 template <class I>
 Json readings_json(const PrintedCheck<I>& check) {
-    return Json{{"as_truncated", to_string(check.truncated)}, {"as_rounded", to_string(check.rounded)}};
+    return Json{{"as_truncated", agreement_word(check.truncated)}, {"as_rounded", agreement_word(check.rounded)}};
 }
 
 }  // namespace
@@ -201,11 +201,11 @@ Json sphere_slopes_certificate(const SphereSlopes<typename Field::Interval>& slo
               {"paper",
                Json{{"a_minus", Json{{"printed", slopes.minus_printed.printed},
                                      {"closed_form", exact_interval_json(closed_minus)},
-                                     {"certified_vs_closed_form", to_string(slopes.minus_vs_closed)},
+                                     {"certified_vs_closed_form", agreement_word(slopes.minus_vs_closed)},
                                      {"certified_vs_printed", readings_json(slopes.minus_printed)}}},
                     {"a_plus", Json{{"printed", slopes.plus_printed.printed},
                                     {"closed_form", exact_interval_json(closed_plus)},
-                                    {"certified_vs_closed_form", to_string(slopes.plus_vs_closed)},
+                                    {"certified_vs_closed_form", agreement_word(slopes.plus_vs_closed)},
                                     {"certified_vs_printed", readings_json(slopes.plus_printed)},
                                     {"closed_form_vs_printed", readings_json(slopes.closed_plus_printed)}}}}}}}};
     const Json inputs{{"p", "1"}};

@@ -55,7 +55,7 @@ bool canonical(const Coefficients& c) {
 
 template <class I>
 Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p) {
-    if (lattice.status != FamilyStatus::certified)
+    if (lattice.status != Outcome::proved)
         throw std::runtime_error(std::string("certificate: ") + to_string(lattice.family) + " is not certified at this p");
     switch (lattice.family) {
         case Family::C0:
@@ -68,12 +68,12 @@ Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p) {
 
 template <class I>
 Json lattice_verdict_json(const LatticeCheck<I>& check) {
-    if (check.verdict == Verdict::admissible) {
+    if (check.verdict == Outcome::proved) {
         Json vectors = Json::array();
         for (const auto& c : check.contact_vectors) vectors.push_back(coefficients_json(c));
         return Json{{"verdict", "packing"}, {"contacts", check.contacts()}, {"contact_vectors", vectors}};
     }
-    if (check.verdict == Verdict::overlapping)
+    if (check.verdict == Outcome::refuted)
         return Json{{"verdict", "overlapping"},
                     {"witness", Json{{"coefficients", coefficients_json(check.witness->coefficients)},
                                      {"norm", exact_interval_json(check.witness->norm)}}}};
@@ -82,7 +82,7 @@ Json lattice_verdict_json(const LatticeCheck<I>& check) {
 
 template <class I>
 Json lattice_enumeration_json(const LatticeCheck<I>& check) {
-    if (check.verdict != Verdict::admissible) return Json(nullptr);
+    if (check.verdict != Outcome::proved) return Json(nullptr);
     Json contacts = Json::array();
     for (const auto& c : check.contact_vectors)
         if (canonical(c)) contacts.push_back(Json{{"coefficients", coefficients_json(c)}});
@@ -93,7 +93,7 @@ template <class Field>
 Json family_certificate(const FamilyLattice<typename Field::Interval>& lattice, const Rational& p, const Field& field,
                         long digits) {
     using I = typename Field::Interval;
-    if (lattice.status != FamilyStatus::certified)
+    if (lattice.status != Outcome::proved)
         throw std::runtime_error(std::string("certificate: ") + to_string(lattice.family) + " is not certified at this p");
     const I p_interval = field.rational(p);
     // Whether the lattice is a packing: only a proved packing lets the claim call phi a packing

@@ -32,9 +32,9 @@ template <class Field>
 Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, const Basis<Rational>& basis,
                          const Rational& p, const Field& field, long digits) {
     using I = typename Field::Interval;
-    if (check.verdict == Verdict::undecided) throw std::runtime_error("certificate: the lattice check is undecided");
+    if (check.verdict == Outcome::undecided) throw std::runtime_error("certificate: the lattice check is undecided");
     const Json basis_json = rational_basis_json(basis);
-    const bool packing = check.verdict == Verdict::admissible;
+    const bool packing = check.verdict == Outcome::proved;
 
     // The enumeration ran on the reduced basis R = U B (NOTES.md 5.6): its transform, and the data
     // its coefficient bound comes from, |det R| and ||r_j x r_k||_1 (NOTES.md 5.2).

@@ -31,7 +31,7 @@ void print_table(const LatticeCheck<I>& check, const std::optional<I>& phi, int 
         const DecimalEnclosure text = to_decimal(x, digits);
         return "[" + text.lo + ", " + text.hi + "]";
     };
-    std::cout << "verdict      " << to_string(check.verdict) << "  (" << check.reason << ")\n";
+    std::cout << "verdict      " << packing_word(check.verdict) << "  (" << check.reason << ")\n";
     if (check.min_norm) std::cout << "min norm     " << enclosure_text(*check.min_norm) << "\n";
     std::cout << "contacts     " << check.contacts() << "\n";
     for (const auto& c : check.contact_vectors) std::cout << "  contact    " << triple_text(c) << "\n";
@@ -81,14 +81,14 @@ int run(const CheckLatticeOptions& options) {
             check = check_family_lattice(lattice, field.rational(p));
             phi = lattice.phi;
             document["family"] = to_string(family);
-            if (!options.certificate.empty() && check.verdict != Verdict::undecided)
+            if (!options.certificate.empty() && check.verdict != Outcome::undecided)
                 write_or_fail(options.certificate, family_lattice_check_certificate(lattice, check, p, field, digits));
         } else {
             const Basis<Rational> basis = parse_basis(options.basis);
             check = check_exact_lattice(basis, p, field);
             phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field)));
             document["basis"] = options.basis;
-            if (!options.certificate.empty() && check.verdict != Verdict::undecided)
+            if (!options.certificate.empty() && check.verdict != Outcome::undecided)
                 write_or_fail(options.certificate, lattice_certificate(check, basis, p, field, digits));
         }
         if (options.json) {
@@ -99,7 +99,7 @@ int run(const CheckLatticeOptions& options) {
             print_table(check, phi, table_digits(digits, !options.digits.empty()));
         }
         // Overlap with a witness is a certified answer, like a packing: exit 0 for both.
-        if (check.verdict == Verdict::undecided) throw Failure(exit_undecided, "check-lattice: undecided: " + check.reason);
+        if (check.verdict == Outcome::undecided) throw Failure(exit_undecided, "check-lattice: undecided: " + check.reason);
         return exit_ok;
     });
 }

@@ -56,10 +56,10 @@ void print_octahedral(const OctahedralCrossover<I>& crossover, int digits) {
         row("root of (6)", root, digits);
     }
     row("ln3/ln4", crossover.ln3_over_ln4, digits);
-    std::cout << "  root of Eq. (6) overlaps ln3/ln4: " << to_string(crossover.closed_form) << "\n";
+    std::cout << "  root of Eq. (6) overlaps ln3/ln4: " << agreement_word(crossover.closed_form) << "\n";
     row("phi_O0", crossover.o0.phi, digits);
     row("phi_O1", crossover.o1_phi, digits);
-    std::cout << "  O0 and O1 (q = 0, s = 1) densities meet: " << to_string(crossover.densities_meet)
+    std::cout << "  O0 and O1 (q = 0, s = 1) densities meet: " << agreement_word(crossover.densities_meet)
               << "; same lattice (B_O0 = U B_O1): " << (crossover.same_lattice ? "yes" : "not shown") << "\n";
     if (!crossover.certified) std::cout << "  not certified: " << crossover.message << "\n";
 }

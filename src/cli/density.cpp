@@ -50,10 +50,10 @@ void print_table(const FamilyLattice<I>& lattice, const std::optional<LatticeChe
     if (check) {
         std::cout << "  packing     ";
         switch (check->verdict) {
-            case Verdict::admissible:
+            case Outcome::proved:
                 std::cout << "yes, " << check->contacts() << " contacts: phi is its packing density\n";
                 break;
-            case Verdict::overlapping:
+            case Outcome::refuted:
                 std::cout << "no: " << not_a_packing;
                 if (check->witness) {
                     const auto& c = check->witness->coefficients;
@@ -62,7 +62,7 @@ void print_table(const FamilyLattice<I>& lattice, const std::optional<LatticeChe
                 }
                 std::cout << "\n";
                 break;
-            case Verdict::undecided: std::cout << "undecided: " << check->reason << "\n"; break;
+            case Outcome::undecided: std::cout << "undecided: " << check->reason << "\n"; break;
         }
     }
     if (!lattice.message.empty()) std::cout << "  note: " << lattice.message << "\n";
@@ -80,8 +80,8 @@ int run(const DensityOptions& options) {
         using I = typename std::decay_t<decltype(field)>::Interval;
         const auto lattice = enclose_family(family, p, field);
         std::optional<LatticeCheck<I>> check;
-        if (lattice.status == FamilyStatus::certified) check = check_family_lattice(lattice, field.rational(p));
-        if (!options.certificate.empty() && lattice.status == FamilyStatus::certified) {
+        if (lattice.status == Outcome::proved) check = check_family_lattice(lattice, field.rational(p));
+        if (!options.certificate.empty() && lattice.status == Outcome::proved) {
             const Json certificate = family_certificate(lattice, p, field, digits);
             try {
                 write_certificate(options.certificate, certificate);
@@ -96,16 +96,16 @@ int run(const DensityOptions& options) {
             document["p_exact"] = rational_text(p);
             document.update(family_json(lattice));
             document["packing"] = check ? lattice_check_json(*check, false) : Json(nullptr);
-            if (check && check->verdict == Verdict::overlapping) document["note"] = not_a_packing;
+            if (check && check->verdict == Outcome::refuted) document["note"] = not_a_packing;
             print_json(document);
         } else {
             print_table(lattice, check, options.p, field.backend(), table_digits(digits, !options.digits.empty()));
         }
-        if (lattice.status == FamilyStatus::no_lattice)
+        if (lattice.status == Outcome::refuted)
             throw Failure(exit_impossible, std::string(to_string(family)) + ": " + lattice.message);
-        if (lattice.status == FamilyStatus::undecided)
+        if (lattice.status == Outcome::undecided)
             throw Failure(exit_undecided, std::string(to_string(family)) + ": undecided: " + lattice.message);
-        if (check->verdict == Verdict::undecided)
+        if (check->verdict == Outcome::undecided)
             throw Failure(exit_undecided, std::string(to_string(family)) + ": packing undecided: " + check->reason);
         return exit_ok;
     });

@@ -35,10 +35,10 @@ std::vector<std::string> split(const std::string& text, char separator) {
 // Among the lattices certified to be packings: the family whose phi is certainly above every
 // other's, or those that cannot be separated from the best (joined by '='), or "none".
 template <class I>
-std::string densest(const std::vector<FamilyLattice<I>>& lattices, const std::vector<Verdict>& verdicts) {
+std::string densest(const std::vector<FamilyLattice<I>>& lattices, const std::vector<Outcome>& verdicts) {
     std::vector<const FamilyLattice<I>*> certified;
     for (std::size_t k = 0; k < lattices.size(); ++k)
-        if (lattices[k].phi && verdicts[k] == Verdict::admissible) certified.push_back(&lattices[k]);
+        if (lattices[k].phi && verdicts[k] == Outcome::proved) certified.push_back(&lattices[k]);
     if (certified.empty()) return "none";
     const FamilyLattice<I>* leader = certified.front();
     for (const auto* lattice : certified)
@@ -65,7 +65,7 @@ struct Cell {
 // One family at one p: the table cell, and its entry in the JSON log.
 template <class Field, class I = typename Field::Interval>
 Cell family_cell(Family family, const Rational& p, const Field& field, int decimals, Json& entry,
-                 std::vector<FamilyLattice<I>>& lattices, std::vector<Verdict>& verdicts) {
+                 std::vector<FamilyLattice<I>>& lattices, std::vector<Outcome>& verdicts) {
     try {
         require_in_domain(family, p);
     } catch (const InputError&) {
@@ -80,9 +80,9 @@ Cell family_cell(Family family, const Rational& p, const Field& field, int decim
         Cell cell;
         if (lattice.phi) {
             const DecimalEnclosure text = to_fixed(*lattice.phi, decimals);
-            const char* mark = check.verdict == Verdict::admissible ? " " : check.verdict == Verdict::overlapping ? "x" : "?";
-            cell = {"[" + text.lo + ", " + text.hi + "]" + mark, check.verdict == Verdict::undecided};
-        } else if (lattice.status == FamilyStatus::no_lattice) {
+            const char* mark = check.verdict == Outcome::proved ? " " : check.verdict == Outcome::refuted ? "x" : "?";
+            cell = {"[" + text.lo + ", " + text.hi + "]" + mark, check.verdict == Outcome::undecided};
+        } else if (lattice.status == Outcome::refuted) {
             cell = {"-  (no lattice)"};
         } else {
             cell = {"?  (undecided)", true};
@@ -118,7 +118,7 @@ int run(const ReportOptions& options, bool default_output) {
             const Rational& p = ps[index];
             std::cerr << "report: p = " << values[index] << " (" << index + 1 << "/" << values.size() << ")\n";
             std::vector<FamilyLattice<I>> lattices;
-            std::vector<Verdict> verdicts;
+            std::vector<Outcome> verdicts;
             Json row{{"p", values[index]}, {"families", Json::object()}};
             std::vector<std::string> line{values[index]};
             for (Family family : all_families()) {

@@ -40,11 +40,11 @@ void print_table(const SphereSlopes<I>& slopes, int digits) {
     row("a_plus (" + (slopes.a_plus_family.empty() ? std::string("?") : slopes.a_plus_family) + ")", slopes.a_plus, digits);
     row("paper closed a_minus", slopes.closed_minus, digits);
     row("paper closed a_plus", slopes.closed_plus, digits);
-    std::cout << "  a_minus vs closed form: " << to_string(slopes.minus_vs_closed)
-              << "; vs printed -0.02941...: " << to_string(slopes.minus_printed.truncated) << "\n";
-    std::cout << "  a_plus vs closed form: " << to_string(slopes.plus_vs_closed)
-              << "; vs printed 0.3555...: " << to_string(slopes.plus_printed.truncated)
-              << "; closed form vs printed: " << to_string(slopes.closed_plus_printed.truncated) << "\n";
+    std::cout << "  a_minus vs closed form: " << agreement_word(slopes.minus_vs_closed)
+              << "; vs printed -0.02941...: " << agreement_word(slopes.minus_printed.truncated) << "\n";
+    std::cout << "  a_plus vs closed form: " << agreement_word(slopes.plus_vs_closed)
+              << "; vs printed 0.3555...: " << agreement_word(slopes.plus_printed.truncated)
+              << "; closed form vs printed: " << agreement_word(slopes.closed_plus_printed.truncated) << "\n";
 }
 
 int run(const SlopesOptions& options) {

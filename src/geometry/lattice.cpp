@@ -9,11 +9,11 @@
 
 namespace superpack {
 
-const char* to_string(Verdict verdict) {
+const char* packing_word(Outcome verdict) {
     switch (verdict) {
-        case Verdict::admissible: return "admissible";
-        case Verdict::overlapping: return "overlapping";
-        case Verdict::undecided: return "undecided";
+        case Outcome::proved: return "admissible";
+        case Outcome::refuted: return "overlapping";
+        case Outcome::undecided: return "undecided";
     }
     return "undecided";
 }
@@ -150,13 +150,13 @@ LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactPr
         check.witness = *std::min_element(below.begin(), below.end(), [](const auto& x, const auto& y) {
             return mid_double(x.norm) < mid_double(y.norm);
         });
-        check.verdict = Verdict::overlapping;
+        check.verdict = Outcome::refuted;
         reason << below.size() << " lattice vector(s) (up to sign) with norm certainly < 2";
     } else if (!check.near_contacts.empty()) {
         reason << check.near_contacts.size()
                << " vector(s) (up to sign) with a norm enclosure containing 2 that no contact identity decides";
     } else {
-        check.verdict = Verdict::admissible;
+        check.verdict = Outcome::proved;
         reason << "every candidate in the coefficient box has norm certainly > 2 or proved = 2 ("
                << check.contacts() << " contacts)";
     }
@@ -264,10 +264,10 @@ Json lattice_check_json(const LatticeCheck<I>& check, bool with_evaluated) {
                     {"norm", enclosure_json(x.norm)}};
     };
     Json result;
-    result["admissible"] = check.verdict == Verdict::admissible    ? Json(true)
-                           : check.verdict == Verdict::overlapping ? Json(false)
+    result["admissible"] = check.verdict == Outcome::proved    ? Json(true)
+                           : check.verdict == Outcome::refuted ? Json(false)
                                                                    : Json(nullptr);
-    result["verdict"] = to_string(check.verdict);
+    result["verdict"] = packing_word(check.verdict);
     result["reason"] = check.reason;
     result["min_norm"] = check.min_norm ? enclosure_json(*check.min_norm) : Json(nullptr);
     result["contacts"] = check.contacts();

@@ -66,7 +66,7 @@ FamilyLattice<DInterval> track_o1(O1Tracker& tracker, const DInterval& p) {
         lattice.search.push_back({proof.initial_box, RootStatus::unique, proof.box, proof.reason});
         lattice.branches.push_back({{{"q", proof.box[0]}, {"s", proof.box[1]}}, lattice.search.back()});
         lattice.basis = o1_basis(proof.box[0], proof.box[1], p);
-        lattice.status = FamilyStatus::certified;
+        lattice.status = Outcome::proved;
         lattice.message = "root of Eq. (12) followed by continuation from p = 1/2; Krawczyk: unique in the box";
         return lattice;
     }
@@ -83,15 +83,15 @@ AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
     const DInterval p = piece_interval(lo, hi);
     const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_o1(*tracker, p) : enclose_family_at(family, p);
     piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
-    piece.detail["family_status"] = lattice.status == FamilyStatus::certified ? "certified"
-                                    : lattice.status == FamilyStatus::no_lattice ? "no_lattice"
+    piece.detail["family_status"] = lattice.status == Outcome::proved ? "certified"
+                                    : lattice.status == Outcome::refuted ? "no_lattice"
                                                                                  : "undecided";
     if (!lattice.message.empty()) piece.detail["family_message"] = lattice.message;
     const std::optional<Basis<DInterval>> basis = lattice.basis;
     const Json parameters = parameters_json(lattice);
     piece.detail["parameters"] = parameters;
     if (!basis) {
-        piece.outcome = lattice.status == FamilyStatus::no_lattice ? "no_lattice" : "undecided";
+        piece.outcome = lattice.status == Outcome::refuted ? "no_lattice" : "undecided";
         piece.reason = "family not certified: " + lattice.message;
         return piece;
     }
@@ -111,9 +111,9 @@ AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
     piece.reason = check.reason;
     if (check.witness) piece.witness = check.witness->coefficients;
     switch (check.verdict) {
-        case Verdict::admissible: piece.outcome = "packing"; break;
-        case Verdict::overlapping: piece.outcome = "overlapping"; break;
-        case Verdict::undecided: piece.outcome = "undecided"; break;
+        case Outcome::proved: piece.outcome = "packing"; break;
+        case Outcome::refuted: piece.outcome = "overlapping"; break;
+        case Outcome::undecided: piece.outcome = "undecided"; break;
     }
     return piece;
 }

@@ -61,17 +61,17 @@ DensitySlope<I> enclose_density_slope(Family family, const I& p) {
         }
         result.phi = phi->value;
         result.slope = phi->derivative;
-        result.status = FamilyStatus::certified;
+        result.status = Outcome::proved;
         return result;
     }
     // C0, C1: s(p) is certified (smallest positive root) for every p of the interval.
     const FamilyLattice<I> lattice = enclose_family_at(family, p);
-    if (lattice.status != FamilyStatus::certified) {
+    if (lattice.status != Outcome::proved) {
         result.message = lattice.message;
         return result;
     }
     result = cubic_density_slope(family, p, lattice.parameters.front().value);
-    if (result.status == FamilyStatus::certified) result.phi = *lattice.phi;
+    if (result.status == Outcome::proved) result.phi = *lattice.phi;
     return result;
 }
 
@@ -95,14 +95,14 @@ DensitySlope<I> cubic_density_slope(Family family, const I& p, const I& s) {
     result.parameter_slope = ds;
     result.phi = phi->value;
     result.slope = phi->derivative;
-    result.status = FamilyStatus::certified;
+    result.status = Outcome::proved;
     return result;
 }
 
 template <class I>
 std::optional<PieceRoot<I>> certify_piece_root(Family family, const I& piece) {
     const FamilyLattice<I> lattice = enclose_family_at(family, piece);
-    if (lattice.status != FamilyStatus::certified || lattice.branches.empty()) return std::nullopt;
+    if (lattice.status != Outcome::proved || lattice.branches.empty()) return std::nullopt;
     return PieceRoot<I>{family, piece, lattice.branches.front().proof.piece.front(), lattice.parameters.front().value,
                         *lattice.phi};
 }
@@ -127,11 +127,11 @@ std::optional<I> smallest_root_within(const PieceRoot<I>& known, const I& p) {
     return newton.box;
 }
 
-const char* to_string(Agreement agreement) {
+const char* agreement_word(Outcome agreement) {
     switch (agreement) {
-        case Agreement::agree: return "agree";
-        case Agreement::disagree: return "disagree";
-        case Agreement::undecided: return "undecided";
+        case Outcome::proved: return "agree";
+        case Outcome::refuted: return "disagree";
+        case Outcome::undecided: return "undecided";
     }
     return "undecided";
 }
@@ -150,10 +150,10 @@ namespace {
 
 // agree: x lies strictly inside (lo, hi); disagree: x lies strictly outside [lo, hi].
 template <class I>
-Agreement classify(const I& x, const I& lo, const I& hi) {
-    if (certainly_less(lo, x) && certainly_less(x, hi)) return Agreement::agree;
-    if (certainly_less(x, lo) || certainly_less(hi, x)) return Agreement::disagree;
-    return Agreement::undecided;
+Outcome classify(const I& x, const I& lo, const I& hi) {
+    if (certainly_less(lo, x) && certainly_less(x, hi)) return Outcome::proved;
+    if (certainly_less(x, lo) || certainly_less(hi, x)) return Outcome::refuted;
+    return Outcome::undecided;
 }
 
 }  // namespace
@@ -177,9 +177,9 @@ PrintedCheck<I> check_printed(const I& x, const std::string& printed) {
 }
 
 template <class I>
-Agreement check_overlap(const I& x, const I& claim) {
+Outcome check_overlap(const I& x, const I& claim) {
     I meet = x;
-    return intersect(meet, x, claim) ? Agreement::agree : Agreement::disagree;
+    return intersect(meet, x, claim) ? Outcome::proved : Outcome::refuted;
 }
 
 // ---- the cubic crossover -------------------------------------------------------------
@@ -491,7 +491,7 @@ OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover_impl(
         if (piece.claim == PieceClaim::undecided) ++wrong;
         else if (piece.claim != PieceClaim::root && sign_of(piece.claim) != (left ? -1 : 1)) ++wrong;
     }
-    if (roots != 1 || wrong != 0 || result.closed_form != Agreement::agree) {
+    if (roots != 1 || wrong != 0 || result.closed_form != Outcome::proved) {
         result.message = "the root of Eq. (6) on (1/2, 1] is not certified unique, or misses ln3/ln4";
         return result;
     }
@@ -511,7 +511,7 @@ OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover_impl(
         for (int k = 0; k < 3; ++k) {
             I entry = zero;
             for (int j = 0; j < 3; ++j) entry = entry + field.integer(unimodular[i][j]) * (*result.o1_basis_at_root)[j][k];
-            same = same && check_overlap(entry, (*result.o0.basis)[i][k]) == Agreement::agree;
+            same = same && check_overlap(entry, (*result.o0.basis)[i][k]) == Outcome::proved;
         }
     result.same_lattice = same;
     bool residuals_vanish = true;
@@ -524,7 +524,7 @@ OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover_impl(
     I phi = *result.o0.phi;
     intersect(phi, *result.o0.phi, *result.o1_phi);
     result.phi = phi;
-    result.certified = residuals_vanish && same && result.densities_meet == Agreement::agree;
+    result.certified = residuals_vanish && same && result.densities_meet == Outcome::proved;
     if (!result.certified) result.message = "O1 at (q, s) = (0, 1) does not match O0 at p*_o";
     return result;
 }
@@ -579,8 +579,8 @@ template std::optional<DInterval> smallest_root_within(const PieceRoot<DInterval
 template std::optional<Ball> smallest_root_within(const PieceRoot<Ball>&, const Ball&);
 template PrintedCheck<DInterval> check_printed(const DInterval&, const std::string&);
 template PrintedCheck<Ball> check_printed(const Ball&, const std::string&);
-template Agreement check_overlap(const DInterval&, const DInterval&);
-template Agreement check_overlap(const Ball&, const Ball&);
+template Outcome check_overlap(const DInterval&, const DInterval&);
+template Outcome check_overlap(const Ball&, const Ball&);
 OctahedralCrossover<DInterval> certify_octahedral_crossover(const DoubleField& field, long digits) {
     return certify_octahedral_crossover_impl(field, digits);
 }

@@ -36,7 +36,7 @@ Json density_slope_json(const DensitySlope<I>& slope) {
     Json parameters = Json::object();
     for (const auto& parameter : slope.parameters) parameters[parameter.name] = enclosure_json(parameter.value);
     Json result{{"family", to_string(slope.family)},
-                {"certified", slope.status == FamilyStatus::certified},
+                {"certified", slope.status == Outcome::proved},
                 {"parameters", parameters},
                 {"parameter_slope", optional_json(slope.parameter_slope)},
                 {"phi", optional_json(slope.phi)},
@@ -47,8 +47,8 @@ Json density_slope_json(const DensitySlope<I>& slope) {
 
 template <class I>
 Json printed_check_json(const PrintedCheck<I>& check) {
-    return Json{{"printed", check.printed}, {"as_truncated", to_string(check.truncated)},
-                {"as_rounded", to_string(check.rounded)}};
+    return Json{{"printed", check.printed}, {"as_truncated", agreement_word(check.truncated)},
+                {"as_rounded", agreement_word(check.rounded)}};
 }
 
 template <class I>
@@ -96,7 +96,7 @@ Json octahedral_crossover_json(const OctahedralCrossover<I>& crossover) {
                 {"p", optional_json(crossover.p)},
                 {"phi", optional_json(crossover.phi)},
                 {"ln3_over_ln4", optional_json(crossover.ln3_over_ln4)},
-                {"root_overlaps_ln3_over_ln4", to_string(crossover.closed_form)},
+                {"root_overlaps_ln3_over_ln4", agreement_word(crossover.closed_form)},
                 {"unique_on", Json::array({"1/2", "1"})}};
     if (!crossover.message.empty()) result["message"] = crossover.message;
     if (crossover.newton) result["newton"] = newton_json(*crossover.newton);
@@ -123,7 +123,7 @@ Json octahedral_crossover_json(const OctahedralCrossover<I>& crossover) {
                                                       Json::array({1, 0, -1})})},
                                   {"claim", "B_O0 = U B_O1 at p*_o, det U = -1"},
                                   {"enclosures_consistent", crossover.same_lattice}};
-    result["densities_meet"] = to_string(crossover.densities_meet);
+    result["densities_meet"] = agreement_word(crossover.densities_meet);
     Json paper = Json::object();
     if (crossover.p) paper["p"] = printed_check_json(check_printed(*crossover.p, "0.7924"));
     if (crossover.phi) paper["phi"] = printed_check_json(check_printed(*crossover.phi, "0.7959"));
@@ -142,11 +142,11 @@ Json sphere_slopes_json(const SphereSlopes<I>& slopes) {
     result["paper"] = Json{
         {"a_minus", Json{{"closed_form", "-(pi/(12 sqrt2)) [ln 64 + 8 + 4 psi(1/2) + 2 psi(3/2) - 6 psi(5/2)]"},
                          {"closed_form_value", optional_json(slopes.closed_minus)},
-                         {"certified_vs_closed_form", to_string(slopes.minus_vs_closed)},
+                         {"certified_vs_closed_form", agreement_word(slopes.minus_vs_closed)},
                          {"certified_vs_printed", printed_check_json(slopes.minus_printed)}}},
         {"a_plus", Json{{"closed_form", "-(pi/(12 sqrt2)) [24 + ln 8 + 4 psi(1/2) + 2 psi(3/2) - 6 psi(5/2)]"},
                         {"closed_form_value", optional_json(slopes.closed_plus)},
-                        {"certified_vs_closed_form", to_string(slopes.plus_vs_closed)},
+                        {"certified_vs_closed_form", agreement_word(slopes.plus_vs_closed)},
                         {"certified_vs_printed", printed_check_json(slopes.plus_printed)},
                         {"closed_form_vs_printed", printed_check_json(slopes.closed_plus_printed)}}}};
     return result;

@@ -67,7 +67,7 @@ void finish(FamilyLattice<I>& lattice, const I& p, Basis<I> basis) {
     lattice.determinant = determinant(basis);
     lattice.phi = *lattice.volume / abs(*lattice.determinant);
     lattice.basis = std::move(basis);
-    lattice.status = FamilyStatus::certified;
+    lattice.status = Outcome::proved;
 }
 
 // C0 and C1: certify the root s in a small box by interval Newton, then prove [0, box) free
@@ -162,7 +162,7 @@ FamilyLattice<I> enclose_o1(const I& p) {
     // listed for information only, so undecided pieces (at large p, where the equations are
     // nearly flat in q) do not make the verdict undecided.
     if (after) {
-        lattice.status = FamilyStatus::no_lattice;
+        lattice.status = Outcome::refuted;
         lattice.message = "the Minkowski branch of Eq. (12) ends at p*_o = ln3/ln4; here Eq. (12) has " +
                           std::to_string(lattice.branches.size()) + " root(s) with q >= 0" +
                           (undecided > 0 ? " certified (" + std::to_string(undecided) + " pieces of the (q, s) box undecided)" : "") +

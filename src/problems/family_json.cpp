@@ -3,11 +3,11 @@
 namespace superpack {
 
 namespace {
-const char* status_text(FamilyStatus status) {
+const char* status_text(Outcome status) {
     switch (status) {
-        case FamilyStatus::certified: return "certified";
-        case FamilyStatus::no_lattice: return "no_lattice";
-        case FamilyStatus::undecided: return "undecided";
+        case Outcome::proved: return "certified";
+        case Outcome::refuted: return "no_lattice";
+        case Outcome::undecided: return "undecided";
     }
     return "undecided";
 }

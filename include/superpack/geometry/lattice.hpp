@@ -11,14 +11,16 @@
 
 #include "superpack/arith/enclosure_json.hpp"
 #include "superpack/arith/exact.hpp"
+#include "superpack/arith/outcome.hpp"
 #include "superpack/geometry/lattice_basis.hpp"
 #include "superpack/geometry/lattice_reduction.hpp"
 #include "superpack/geometry/superball.hpp"
 
 namespace superpack {
 
-enum class Verdict { admissible, overlapping, undecided };
-const char* to_string(Verdict verdict);
+// Is the lattice a packing (admissible for 2K)? proved: admissible; refuted: overlapping, with
+// a witness vector of norm < 2. Printed as "admissible", "overlapping" or "undecided".
+const char* packing_word(Outcome verdict);
 
 using Coefficients = std::array<long, 3>;
 
@@ -38,7 +40,7 @@ constexpr std::size_t enumeration_candidate_limit = 1000000;
 
 template <class I>
 struct LatticeCheck {
-    Verdict verdict = Verdict::undecided;
+    Outcome verdict = Outcome::undecided;
     std::string reason;
     std::optional<I> min_norm;                   // min over nonzero lattice vectors of ||v||_(2p)
     std::vector<Coefficients> contact_vectors;   // proved norm exactly 2; v and -v both listed

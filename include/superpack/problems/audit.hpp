@@ -14,7 +14,7 @@ namespace superpack {
 
 struct AuditPiece {
     Rational lo, hi;  // the piece [lo, hi] of p, exactly
-    Verdict verdict = Verdict::undecided;
+    Outcome verdict = Outcome::undecided;
     std::string reason;
     // packing | overlapping (every p of the piece) | overlapping_at_point (at the piece's midpoint,
     // the piece itself undecided) | no_lattice | undecided

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "superpack/arith/outcome.hpp"
 #include "superpack/problems/families.hpp"
 
 namespace superpack {
@@ -19,7 +20,7 @@ namespace superpack {
 template <class I>
 struct DensitySlope {
     Family family = Family::C0;
-    FamilyStatus status = FamilyStatus::undecided;
+    Outcome status = Outcome::undecided;
     std::string message;
     std::vector<NamedValue<I>> parameters;  // s (C0, C1: the smallest positive root) or c (O0)
     std::optional<I> parameter_slope;       // ds/dp (C0, C1)
@@ -50,21 +51,21 @@ template <class I>
 std::optional<I> smallest_root_within(const PieceRoot<I>& known, const I& p);
 
 // Three-valued comparison of a certified enclosure with a claimed value.
-enum class Agreement { agree, disagree, undecided };
-const char* to_string(Agreement agreement);
+// Does a certified value agree with a printed one? Printed as "agree", "disagree" or "undecided".
+const char* agreement_word(Outcome agreement);
 
 // A decimal printed as "d..." read two ways: truncated (the value lies between d and d plus
 // one unit in its last place, away from zero) and rounded (within half a unit of d).
 template <class I>
 struct PrintedCheck {
     std::string printed;
-    Agreement truncated = Agreement::undecided, rounded = Agreement::undecided;
+    Outcome truncated = Outcome::undecided, rounded = Outcome::undecided;
 };
 template <class I>
 PrintedCheck<I> check_printed(const I& x, const std::string& printed);
 // Equal to the certified x? agree = the enclosures overlap, disagree = they are disjoint.
 template <class I>
-Agreement check_overlap(const I& x, const I& claim);
+Outcome check_overlap(const I& x, const I& claim);
 
 // One piece of [1, 10] in the proof that phi_C1 - phi_C0 has exactly one zero in (1, 10].
 // Pieces are proved in binary64 intervals (exact double endpoints): the partition does not
@@ -102,7 +103,7 @@ struct OctahedralCrossover {
     std::string message;
     std::optional<NewtonResult<I>> newton;  // the root of Eq. (6) itself, by interval Newton
     std::optional<I> ln3_over_ln4;          // the closed form (NOTES.md: Eq. 6 <=> 4^p = 3)
-    Agreement closed_form = Agreement::undecided;  // does the root overlap ln3/ln4?
+    Outcome closed_form = Outcome::undecided;  // does the root overlap ln3/ln4?
     std::vector<SignPiece> pieces;          // the sign of Eq. (6) on a partition of [1/2, 1]
     std::optional<I> p;                     // p*_o: the meet of the two enclosures
     FamilyLattice<I> o0{Family::O0};        // O0 at p*_o
@@ -115,7 +116,7 @@ struct OctahedralCrossover {
     // B_O0 = U B_O1 at p*_o with the integer U = [[2,-1,-1],[0,1,0],[1,0,-1]] (det -1):
     // the exact identity is in NOTES.md; this is its check on the enclosures (overlap).
     bool same_lattice = false;
-    Agreement densities_meet = Agreement::undecided;
+    Outcome densities_meet = Outcome::undecided;
     std::optional<I> phi;  // phi*_o
 };
 
@@ -129,7 +130,7 @@ struct SphereSlopes {
     std::optional<I> a_minus, a_plus;
     std::string a_plus_family;   // the cubic family with the larger slope (densest for p -> 1+)
     std::optional<I> closed_minus, closed_plus;  // -(pi/(12 sqrt2)) [...] as printed in the paper
-    Agreement minus_vs_closed = Agreement::undecided, plus_vs_closed = Agreement::undecided;
+    Outcome minus_vs_closed = Outcome::undecided, plus_vs_closed = Outcome::undecided;
     PrintedCheck<I> minus_printed, plus_printed, closed_plus_printed;
 };
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "superpack/arith/outcome.hpp"
 #include "superpack/geometry/lattice_basis.hpp"
 #include "superpack/solve/newton.hpp"
 #include "superpack/solve/root_partition.hpp"
@@ -140,8 +141,8 @@ Basis<T> o1_basis(const T& q, const T& s, const T& p) {
     return Basis<T>{{{two_l, two_l, -two_l}, {-(two * q), two * s, -(two * q)}, {two * q, -(two * q), -(two * s)}}};
 }
 
-// The certified description of one family at one p.
-enum class FamilyStatus { certified, no_lattice, undecided };
+// The certified description of one family at one p. Its status: proved (the lattice exists,
+// printed "certified"), refuted (certified not to exist, "no_lattice") or undecided.
 
 template <class I>
 struct NamedValue {
@@ -159,7 +160,7 @@ template <class I>
 struct FamilyLattice {
     explicit FamilyLattice(Family which) : family(which) {}
     Family family;
-    FamilyStatus status = FamilyStatus::undecided;
+    Outcome status = Outcome::undecided;
     std::string message;                    // why, when not certified
     std::vector<NamedValue<I>> parameters;  // s; or l, q, s; or c
     std::vector<RootBranch<I>> branches;    // every certified root of the contact equations
