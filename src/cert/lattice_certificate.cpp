@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 #include "superpack/arith/exact.hpp"
-#include "superpack/geometry/exact_norm.hpp"
 
 namespace superpack {
 
