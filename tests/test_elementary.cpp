@@ -42,6 +42,11 @@ double ulps(const DInterval& y) {
     return scale == 0 ? 0 : (y.upper() - y.lower()) / (scale * std::numeric_limits<double>::epsilon());
 }
 
+// A width plus 16 ulps of the larger end of `scale`.
+double within(double width, const DInterval& scale) {
+    return width + 16 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(scale.lower()), std::fabs(scale.upper()));
+}
+
 // Exponents spread over the whole binary64 range, with a random 53-bit mantissa.
 double random_positive(std::mt19937_64& random, int min_exponent, int max_exponent) {
     std::uniform_int_distribution<int> exponent(min_exponent, max_exponent);
@@ -128,6 +133,36 @@ TEST_CASE("expm1 of binary64 intervals encloses MPFR's value with a relative err
     const DInterval wide = expm1(DInterval(-0.75, 0.25));
     CHECK(encloses(wide, mpfr_expm1, -0.75));
     CHECK(encloses(wide, mpfr_expm1, 0.25));
+}
+
+// log1p and expm1 evaluate a narrow interval (width up to 2^-20) as a whole rather than at its
+// two ends: the result must hold the exact values at both ends and stay as tight as the hull of
+// the two end enclosures, up to the factor 1 + 2|x| that x's second appearance in the series
+// costs (at most 1.6 for expm1 at -1/2) and a few ulps. The widths and centres cover both sides
+// of each series' limit (1/16 for log1p, 1/2 for expm1), intervals across 0, and tiny ones.
+TEST_CASE("log1p and expm1 of narrow binary64 intervals hold both ends and stay tight") {
+    std::mt19937_64 random(20261201);
+    std::uniform_real_distribution<double> centre(-0.75, 0.75), unit(0, 1);
+    for (int k = 0; k < 20000; ++k) {
+        double a = k % 4 == 0 ? (k % 8 ? 1 : -1) * random_positive(random, -1074, -5) : centre(random);
+        if (k % 16 == 1) a = (k % 32 == 1 ? 1 : -1) * (0.0625 - 0x1p-22 * unit(random));
+        if (k % 16 == 3) a = (k % 32 == 3 ? 1 : -1) * (0.5 - 0x1p-22 * unit(random));
+        const double width = std::ldexp(unit(random), -20 - static_cast<int>(40 * unit(random)));
+        const double b = a + width;
+        if (!(b > a)) continue;
+        INFO("x = [" << a << ", " << b << "]");
+        const double dependency = 1 + 2 * std::max(std::fabs(a), std::fabs(b));
+        const DInterval log_value = log1p(DInterval(a, b));
+        REQUIRE(encloses(log_value, mpfr_log1p, a));
+        REQUIRE(encloses(log_value, mpfr_log1p, b));
+        const DInterval log_hull = hull(log1p(DInterval(a)), log1p(DInterval(b)));
+        CHECK((log_value.upper() - log_value.lower()) <= within(dependency * (log_hull.upper() - log_hull.lower()), log_hull));
+        const DInterval exp_value = expm1(DInterval(a, b));
+        REQUIRE(encloses(exp_value, mpfr_expm1, a));
+        REQUIRE(encloses(exp_value, mpfr_expm1, b));
+        const DInterval exp_hull = hull(expm1(DInterval(a)), expm1(DInterval(b)));
+        CHECK((exp_value.upper() - exp_value.lower()) <= within(dependency * (exp_hull.upper() - exp_hull.lower()), exp_hull));
+    }
 }
 
 TEST_CASE("Gamma of binary64 intervals encloses MPFR's value on and off the series range") {

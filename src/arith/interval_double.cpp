@@ -81,63 +81,114 @@ DInterval DoubleField::pi() const {
 
 namespace {
 
-// log(1 + x) at a point x > -1, with a relative error of a few units in the last place
-// (NOTES.md 1.2). Near 0, log(1 + x) through a rounded 1 + x would keep only an absolute
-// accuracy of 2^-53, which is what the contact equations of C0 and C1 lose at large p.
-DInterval log1p_at(double x) {
-    if (std::fabs(x) <= 0.0625) {
-        // 2 atanh z with z = x / (2 + x), |z| <= 1/31: 2z (1 + z^2/3 + ... + z^10/11 + z^12 R)
-        // with 0 <= R <= 1 / (13 (1 - z^2)) < 1/12, all in outward-rounded interval arithmetic.
-        const DInterval point(x), one(1.0);
-        const DInterval z = point / (DInterval(2.0) + point);
-        const DInterval z2 = square(z);
-        DInterval series = z2 * DInterval(0.0, 1.0 / 12);  // R < 0.078 < fl(1/12)
-        for (const int denominator : {11, 9, 7, 5, 3}) series = z2 * (one / DInterval(denominator) + series);
-        return DInterval(2.0) * z * (one + series);
-    }
-    // 1 + x = y + e exactly (TwoSum), so log(1 + x) = log y + log(1 + e/y) with |e/y| <= 2^-53,
-    // and z - z^2 <= log(1 + z) <= z for |z| <= 1/2. Here |log y| > 0.06, where log has a
-    // relative error of a few ulps.
+// log(1 + x) for x > -1 with a relative error of a few units in the last place (NOTES.md 1.2).
+// Near 0, log(1 + x) through a rounded 1 + x would keep only an absolute accuracy of 2^-53,
+// which is what the contact equations of C0 and C1 lose at large p.
+constexpr double kLog1pSeriesLimit = 0.0625;
+
+// 2 atanh z with z = x / (2 + x), |z| <= 1/31 for |x| <= 1/16: 2z (1 + z^2/3 + ... + z^10/11 +
+// z^12 R) with 0 <= R <= 1 / (13 (1 - z^2)) < 1/12, all in outward-rounded interval arithmetic.
+// Every step encloses its exact result, so a whole (narrow) interval x can be evaluated at once.
+DInterval log1p_series(const DInterval& x) {
+    // The reciprocals 1/11, 1/9, ..., 1/3 are enclosed once: dividing at each call cost as much
+    // as the rest of the series.
+    static const std::vector<DInterval> reciprocals = [] {
+        std::vector<DInterval> table;
+        for (const int denominator : {11, 9, 7, 5, 3}) table.push_back(DInterval(1.0) / DInterval(denominator));
+        return table;
+    }();
+    const DInterval z = x / (DInterval(2.0) + x);
+    const DInterval z2 = square(z);
+    DInterval series = z2 * DInterval(0.0, 1.0 / 12);  // R < 0.078 < fl(1/12)
+    for (const DInterval& reciprocal : reciprocals) series = z2 * (reciprocal + series);
+    return DInterval(2.0) * z * (DInterval(1.0) + series);
+}
+
+// 1 + x = y + e exactly (TwoSum), so log(1 + x) = log y + log(1 + e/y) with |e/y| <= 2^-53, and
+// z - z^2 <= log(1 + z) <= z for |z| <= 1/2: the correction of x, enclosed.
+struct RoundedOnePlus {
+    double y;
+    DInterval correction;
+};
+RoundedOnePlus rounded_one_plus(double x) {
     const double y = 1 + x;
     const double one_part = y - x;
     const double x_part = y - one_part;
     const double e = (1 - one_part) + (x - x_part);
     const DInterval ratio = DInterval(e) / DInterval(y);
-    return log(DInterval(y)) + hull(ratio - square(ratio), ratio);
+    return {y, hull(ratio - square(ratio), ratio)};
 }
 
-// exp(x) - 1 at a point x, with a relative error of a few ulps: for |x| <= 1/2 the series
-// x (1 + x/2! + ... + x^19/20! + x^20 R), |R| <= sum_j |x|^j/(21 + j)! < 2.01e-20, in outward
-// interval arithmetic; beyond, exp(x) - 1, which is at least 0.39 in size there.
-DInterval expm1_at(double x) {
-    if (std::fabs(x) > 0.5) return exp(DInterval(x)) - DInterval(1.0);
+// Beyond the series' range |log y| > 0.06, where log has a relative error of a few ulps.
+DInterval log1p_at(double x) {
+    if (std::fabs(x) <= kLog1pSeriesLimit) return log1p_series(DInterval(x));
+    const RoundedOnePlus sum = rounded_one_plus(x);
+    return log(DInterval(sum.y)) + sum.correction;
+}
+
+// exp(x) - 1 with a relative error of a few ulps for |x| <= 1/2: the series
+// x (1 + x/2! + ... + x^(n-1)/n! + x^n R) in outward interval arithmetic, where
+// |R| <= sum_j |x|^j/(n + 1 + j)! <= 1/((n + 1)! (1 - |x|/(n + 2))) <= 1.25/(n + 1)! for n >= 1;
+// n is the first term count with |x|^n/(n + 1)! <= 2^-60, at most 20 (a guess: any n is
+// sound, and a small x, as at large p, needs few terms). Every step encloses its exact result,
+// so a whole (narrow) interval x can be evaluated at once.
+constexpr double kExpm1SeriesLimit = 0.5;
+DInterval expm1_series(const DInterval& x) {
+    constexpr int kMostTerms = 20;
     static const std::vector<DInterval> inverse_factorials = [] {
-        std::vector<DInterval> table;  // 1/(k + 1)! for k = 0..19; (k + 1)! <= 20! is a double
+        std::vector<DInterval> table;  // 1/(k + 1)! for k = 0..20; (k + 1)! <= 21! is a double
         double factorial = 1;
-        for (int k = 1; k <= 20; ++k) {
+        for (int k = 1; k <= kMostTerms + 1; ++k) {
             factorial *= k;
             table.push_back(DInterval(1.0) / DInterval(factorial));
         }
         return table;
     }();
-    const DInterval point(x);
-    DInterval series(-3e-20, 3e-20);
-    for (int k = 19; k >= 0; --k) series = inverse_factorials[k] + point * series;
-    return point * series;
+    const double size = std::max(std::fabs(x.lower()), std::fabs(x.upper()));
+    int terms = 1;
+    for (double term = size / 2; terms < kMostTerms && term > 0x1p-60; ++terms) term *= size / (terms + 2);
+    const double remainder = (DInterval(1.25) * inverse_factorials[terms]).upper();
+    DInterval series(-remainder, remainder);
+    for (int k = terms - 1; k >= 0; --k) series = inverse_factorials[k] + x * series;
+    return x * series;
+}
+
+// Beyond 1/2, exp(x) - 1, which is at least 0.39 in size there.
+DInterval expm1_at(double x) {
+    if (std::fabs(x) > kExpm1SeriesLimit) return exp(DInterval(x)) - DInterval(1.0);
+    return expm1_series(DInterval(x));
 }
 
 }  // namespace
 
 DInterval exp(const DInterval& x) { return detail::enclose_exp(x); }
 DInterval log(const DInterval& x) { return detail::enclose_log(x); }
-// Increasing: the lower end's value rounded down and the upper end's rounded up.
+// Increasing: the lower end's value rounded down and the upper end's rounded up, except that a
+// narrow interval inside the series' range is evaluated as a whole (one evaluation, not two).
 DInterval expm1(const DInterval& x) {
+    if (x.lower() != x.upper() && x.upper() - x.lower() <= 0x1p-20 && std::fabs(x.lower()) <= kExpm1SeriesLimit &&
+        std::fabs(x.upper()) <= kExpm1SeriesLimit)
+        return expm1_series(x);
     const DInterval low = expm1_at(x.lower());
     if (x.lower() == x.upper()) return low;
     return DInterval(low.lower(), expm1_at(x.upper()).upper());
 }
+// A narrow interval on one side of the series' limit is evaluated as a whole, which costs one
+// evaluation instead of two (Newton's boxes); log1p is increasing, so each end's value also
+// bounds the whole range.
 DInterval log1p(const DInterval& x) {
     if (!(x.lower() > -1)) throw std::domain_error("log1p: argument not certainly > -1");
+    if (x.lower() != x.upper() && x.upper() - x.lower() <= 0x1p-20) {
+        if (std::fabs(x.lower()) <= kLog1pSeriesLimit && std::fabs(x.upper()) <= kLog1pSeriesLimit)
+            return log1p_series(x);
+        if ((x.lower() > kLog1pSeriesLimit || x.upper() < -kLog1pSeriesLimit)) {
+            // log1p(a) = log(y_a) + c_a >= (the lower end of log [y_a, y_b]) + c_a, and likewise at b.
+            const RoundedOnePlus low = rounded_one_plus(x.lower()), high = rounded_one_plus(x.upper());
+            const DInterval logarithm = log(DInterval(low.y, high.y));
+            return DInterval((DInterval(logarithm.lower()) + low.correction).lower(),
+                             (DInterval(logarithm.upper()) + high.correction).upper());
+        }
+    }
     const DInterval low = log1p_at(x.lower());
     if (x.lower() == x.upper()) return low;
     return DInterval(low.lower(), log1p_at(x.upper()).upper());

@@ -56,7 +56,10 @@ CubicConstants<P> cubic_constants(const P& p) {
     const auto field = scalar_field(p);
     const P two_p = field.integer(2) * p;
     const auto log_two = log(field.integer(2));
-    return {two_p, cubic_shift(two_p, log_two), -expm1(-log_two / two_p), exp(-two_p * log_two)};
+    // t is taken from the deficit rather than from its own exp: 1 - (1 - t) loses nothing that
+    // matters (t is near 1), and it saves one exponential per density.
+    const P deficit = -expm1(-log_two / two_p);
+    return {two_p, field.integer(1) - deficit, deficit, exp(-two_p * log_two)};
 }
 
 // C0 (Eq. 2): (s + t)^(2p) + s^(2p) + 2^(-2p) - 1 = 0, s the smallest positive root.
