@@ -66,7 +66,16 @@ TEMPLATE_TEST_CASE("minimise: a quadratic in two dimensions with its exact minim
     // f(x, y) = (x - 1/3)^2 + 2 (y + 1/4)^2 + 1 on [-1, 1]^2: minimum 1 at (1/3, -1/4).
     const I third = field.rational(Rational(1, 3)), quarter = field.rational(Rational(1, 4)), one = field.integer(1);
     auto f = [&](const std::vector<I>& x) { return square(x[0] - third) + field.integer(2) * square(x[1] + quarter) + one; };
-    auto bound = [&](const std::vector<I>& box) { return BoundedBox<I, int>{box, true, f(box), 0, "natural extension"}; };
+    // The best value handed to bound is a certified value of f, so never below the minimum 1.
+    int calls_with_best = 0;
+    bool best_below_minimum = false;
+    auto bound = [&](const std::vector<I>& box, const std::optional<I>& best) {
+        if (best) {
+            ++calls_with_best;
+            best_below_minimum = best_below_minimum || certainly_less(upper_point(*best), one);
+        }
+        return BoundedBox<I, int>{box, true, f(box), 0, "natural extension"};
+    };
     auto value = [&](const std::vector<I>& point) { return std::optional<PointValue<I, std::vector<I>>>({f(point), point}); };
     MinimiseOptions options;
     options.relative_tolerance = 1e-6;
@@ -88,6 +97,8 @@ TEMPLATE_TEST_CASE("minimise: a quadratic in two dimensions with its exact minim
             CHECK(certainly_less(upper_point(minimum.best->value), lower_point(leaf.lower)));
     }
     CHECK(minimiser_kept);
+    CHECK(calls_with_best > 0);
+    CHECK_FALSE(best_below_minimum);
     // The leaves partition the domain (a ball holds its radius to 30 bits, hence the slack).
     CHECK(area == Approx(4.0).epsilon(1e-6));
 }
@@ -97,7 +108,7 @@ TEST_CASE("minimise: a region without a bound makes the minimum undecided, and i
     const DoubleField field;
     auto f = [](const std::vector<I>& x) { return square(x[0]); };
     // No bound where x > 1/2: those boxes are bisected down to the width limit, then kept.
-    auto bound = [&](const std::vector<I>& box) {
+    auto bound = [&](const std::vector<I>& box, const std::optional<I>&) {
         const bool bounded = box[0].upper() <= 0.5;
         return BoundedBox<I, int>{box, bounded, f(box), 0, bounded ? "natural extension" : "no bound here"};
     };

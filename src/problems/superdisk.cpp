@@ -256,14 +256,10 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
     // unless the a priori bound below decides it.
     search.min_undecided_width = 1e-12;
     search.min_width = 1e-14;
-    // The best value found so far, so that a piece bounded a priori can be seen to be discarded.
-    std::optional<I> best_seen;
-    if (known) best_seen = known->value;
     auto value_at = [&](const std::vector<I>& t) -> std::optional<PointValue<I, HexagonLattice<I>>> {
         const HexagonLattice<I> lattice = lattice_at(t[0], q, report.area);
         if (lattice.status != RootStatus::unique) return std::nullopt;
         const I d = lattice.determinant / field.integer(4);
-        if (!best_seen || certainly_less(d, *best_seen)) best_seen = d;
         return PointValue<I, HexagonLattice<I>>{d, lattice};
     };
     // A piece whose v(t) Krawczyk cannot follow (for large q, near t = 0) is bounded instead by
@@ -280,7 +276,8 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
         piece.search_box.clear();
         return piece;
     };
-    auto bound_piece = [&](const std::vector<I>& box) {
+    // `best`, the minimiser's best value so far, lets a piece bounded a priori be seen to be discarded.
+    auto bound_piece = [&](const std::vector<I>& box, const std::optional<I>& best) {
         const I& t = box[0];
         Piece piece{t, PieceVerdict::undecided, zero, {}, zero, "", {}, LowerBoundMethod::naive, zero};
         auto bounded = [&](PieceVerdict verdict, std::string reason) {
@@ -293,7 +290,7 @@ SuperdiskReport<typename Field::Interval> analyse_superdisk_in(const Rational& p
             piece.reason = "contact system not certified on the piece: " + at.reason;
             const Piece bounded_a_priori = a_priori_piece(piece);
             const bool too_narrow = width_upper(t) < search.min_undecided_width && contains(t, zero);
-            if (too_narrow || (best_seen && certainly_less(upper_point(*best_seen), bounded_a_priori.lower_bound)))
+            if (too_narrow || (best && certainly_less(upper_point(*best), bounded_a_priori.lower_bound)))
                 return BoundedBox<I, Piece>{box, true, bounded_a_priori.lower_bound, bounded_a_priori, bounded_a_priori.reason};
             return BoundedBox<I, Piece>{box, false, zero, piece, piece.reason};
         }

@@ -67,7 +67,9 @@ struct Minimum {
     bool certified = false;                   // no undecided leaf, and a best value exists
 };
 
-// bound(box) -> BoundedBox<I, Data> (bounded or not, with its reason); value(point) ->
+// bound(box, best) -> BoundedBox<I, Data> (bounded or not, with its reason), where best is the
+// lowest certified value found so far (std::optional<I>), so that a bound can give up early
+// where it already lies above it; value(point) ->
 // std::optional<PointValue<I, Witness>>, f at a point of the domain (or nothing when it could
 // not be certified there). `known`: a certified value of f at a point of the domain, if any.
 template <class I, class Data, class Witness, class Bound, class Value>
@@ -83,6 +85,9 @@ Minimum<I, Data, Witness> minimise(const std::vector<I>& domain, const Bound& bo
         std::optional<PointValue<I, Witness>> at = value(point);
         if (at && (!result.best || mid_double(upper_point(at->value)) < mid_double(upper_point(result.best->value))))
             result.best = std::move(at);
+    };
+    auto bound_below_best = [&](const std::vector<I>& box) {
+        return bound(box, result.best ? std::optional<I>(result.best->value) : std::nullopt);
     };
     auto above_best = [&](const Box& box) {
         return result.best && certainly_less(upper_point(result.best->value), lower_point(box.lower));
@@ -100,10 +105,10 @@ Minimum<I, Data, Witness> minimise(const std::vector<I>& domain, const Bound& bo
             return;
         }
         auto halves = bisect_widest(box.box);
-        self(bound(halves.first), self);
-        self(bound(halves.second), self);
+        self(bound_below_best(halves.first), self);
+        self(bound_below_best(halves.second), self);
     };
-    file(bound(domain), file);
+    file(bound_below_best(domain), file);
     while (!open.empty()) {
         const Box& top = open.top();
         if (above_best(top)) break;  // so is everything still open
@@ -118,8 +123,8 @@ Minimum<I, Data, Witness> minimise(const std::vector<I>& domain, const Bound& bo
         open.pop();
         consider(center_of(box));
         auto halves = bisect_widest(box);
-        file(bound(halves.first), file);
-        file(bound(halves.second), file);
+        file(bound_below_best(halves.first), file);
+        file(bound_below_best(halves.second), file);
     }
     bool undecided = false;
     for (const Box& leaf : result.leaves) undecided = undecided || leaf.fate == LeafFate::undecided;
