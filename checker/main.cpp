@@ -5,6 +5,7 @@
 #include <iostream>
 #include <string>
 
+#include "checker/build_commit.hpp"
 #include "checker/verifier.hpp"
 
 namespace {
@@ -44,7 +45,7 @@ int run(const std::string& file, bool json) {
     const VerifyReport report = verify_file(file);
     const std::string where = report.path.empty() ? "" : " at " + report.path;
     if (json) {
-        Document document{{"tool", "superpack-verify"}, {"version", SUPERPACK_VERSION}, {"commit", SUPERPACK_COMMIT},
+        Document document{{"tool", "superpack-verify"}, {"version", SUPERPACK_VERSION}, {"commit", build_commit()},
                       {"command", "verify"}, {"file", file}, {"verdict", to_string(report.verdict)},
                       {"claim_kind", report.claim_kind}, {"claim", report.rendered_claim}, {"steps", report.steps},
                       {"checker_bits", report.precision}};
@@ -82,7 +83,7 @@ int main(int argc, char** argv) {
             std::cout << usage;
             return exit_valid;
         } else if (option && argument == "--version") {
-            std::cout << "superpack-verify " << SUPERPACK_VERSION << " (" << SUPERPACK_COMMIT << ")\n";
+            std::cout << "superpack-verify " << SUPERPACK_VERSION << " (" << build_commit() << ")\n";
             return exit_valid;
         } else if (option && argument == "--json") {
             json = true;
