@@ -1,0 +1,66 @@
+// superpack best: the densest lattice packing of the superball at p that superpack can certify
+// (NOTES.md, "Densest lattice search"). The published families (every one whose domain holds p)
+// are certified as usual; a floating-point search (problems/lattice_search.hpp) looks for denser
+// lattices; a search lattice counts only once made exact (its double entries, scaled up by
+// 1 + 2^-40 so that its near-contacts clear 2) and proved admissible by the lattice check, and
+// only if it is denser than every certified family. The search only guesses: what is reported
+// is what was proved, whatever the search found.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "superpack/geometry/contact_configuration.hpp"
+#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/lattice_search.hpp"
+
+namespace superpack {
+
+template <class I>
+struct FamilyEntry {
+    FamilyLattice<I> lattice;
+    LatticeCheck<I> check;  // proved: the family lattice is a packing at p
+};
+
+// A search candidate made exact and checked.
+template <class I>
+struct SearchLattice {
+    SearchCandidate guess;
+    Basis<Rational> basis;  // the guess's entries (exact dyadic rationals) times 1 + 2^-40
+    LatticeCheck<I> check;
+    I phi;                  // V(p) / |det basis|, a packing density when check.verdict is proved
+};
+
+enum class BestSource { family, search };
+
+template <class I>
+struct BestLattice {
+    Outcome status = Outcome::undecided;  // proved: a certified packing was found
+    std::string message;
+    std::vector<FamilyEntry<I>> families;        // every family whose domain holds p
+    std::vector<std::string> outside_domain;     // the others, by name
+    SearchResult search;
+    std::vector<SearchLattice<I>> checked;       // distinct candidates denser than the best family, checked
+    long rejected = 0;  // candidates not denser (in floating point) than the best certified family
+    BestSource source = BestSource::family;
+    std::size_t index = 0;  // into families or checked
+    ConfigurationMatch configuration;  // of the best lattice's contacts (search: near contacts, numerically)
+};
+
+struct BestOptions {
+    SearchOptions search;
+};
+
+// p >= 1/2 and p <= 10^6 (InputError otherwise).
+BestLattice<DInterval> find_best_lattice(const Rational& p, const DoubleField& field, const BestOptions& options);
+BestLattice<Ball> find_best_lattice(const Rational& p, const BallField& field, const BestOptions& options);
+
+// The best lattice's phi and basis.
+template <class I>
+const I& best_phi(const BestLattice<I>& best);
+template <class I>
+Basis<I> best_basis(const BestLattice<I>& best);
+template <class I>
+std::string best_name(const BestLattice<I>& best);
+
+}  // namespace superpack

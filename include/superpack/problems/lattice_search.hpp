@@ -1,0 +1,57 @@
+// A floating-point search for dense lattice packings of the superball at p: guesses only. Every
+// lattice it returns is certified or rejected by problems/best.hpp, and a proof never depends on
+// how good the guess was (NOTES.md, "Densest lattice search").
+//
+// A lattice with basis rows B packs translates of the superball K iff every nonzero lattice
+// vector has 2p-norm >= 2; scaled so that its shortest vector has norm 2 it has density
+// V(p) / |det B|. The search minimises the scale-free F(B) = log|det B| - 3 log(lambda(B) / 2),
+// lambda the shortest norm, from given and random starts, by a pattern search, then polishes
+// each end point by Newton's method on the KKT system of min |det B| subject to
+// ||c B||_(2p) = 2 for the near-shortest coefficient vectors c.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "superpack/geometry/lattice_basis.hpp"
+
+namespace superpack {
+
+using DoubleBasis = Basis<double>;
+
+struct SearchStart {
+    std::string name;  // where it comes from: a family, "random 3", ...
+    DoubleBasis basis;
+};
+
+struct SearchOptions {
+    unsigned seed = 1;       // random starts and directions (deterministic for a seed)
+    int random_starts = 16;  // besides the given starts
+    int perturbed_starts = 2;  // random perturbations of each given start
+};
+
+struct SearchCandidate {
+    std::string start;    // the start it was found from
+    DoubleBasis basis;    // LLL-like reduced, det > 0, shortest vector of norm 2 (to rounding)
+    double density = 0;   // V(p) / |det B| in floating point
+    // The coefficient vectors (one per +-pair, in `basis`) whose norm is within 1e-9 of the
+    // shortest: the contacts of the critical lattice the candidate approximates.
+    std::vector<std::array<long, 3>> near_contacts;
+    bool polished = false;  // Newton on the KKT system converged from the pattern search's point
+};
+
+struct SearchResult {
+    std::vector<SearchCandidate> candidates;  // one per start, densest first
+    long evaluations = 0;                     // of F
+    double seconds = 0;                       // wall time of the search
+};
+
+// p >= 1/2 as a double, volume V(p) as a double (only for the reported float density).
+SearchResult search_dense_lattices(double p, double volume, const std::vector<SearchStart>& starts,
+                                   const SearchOptions& options);
+
+// The shortest 2p-norm over the lattice vectors c B with |c_i| <= 2, and the norm of one vector.
+double shortest_norm(const DoubleBasis& basis, double p);
+double norm_2p(const std::array<double, 3>& v, double p);
+
+}  // namespace superpack

@@ -1,0 +1,213 @@
+// superpack best --p P [--digits D] [--json] [--certificate FILE] [--seed S] [--starts N]: the
+// densest lattice packing of the superball at p that superpack certifies (problems/best.hpp).
+#include <chrono>
+#include <memory>
+
+#include "common.hpp"
+#include "superpack/arith/decimal.hpp"
+#include "superpack/cert/atomic_file.hpp"
+#include "superpack/cert/certificate.hpp"
+#include "superpack/cert/family_certificate.hpp"
+#include "superpack/cert/lattice_certificate.hpp"
+#include "superpack/problems/best.hpp"
+
+namespace superpack::cli {
+
+namespace {
+
+struct BestCommandOptions {
+    std::string p, digits, certificate;
+    unsigned seed = 1;
+    int starts = 16;
+    bool json = false;
+};
+
+// Measured: the search dominates; 100 digits adds under a second of certification.
+constexpr long max_digits = 1000;
+constexpr int max_starts = 1000;
+
+Json triples_json(const std::vector<Coefficients>& triples) {
+    Json list = Json::array();
+    for (const Coefficients& c : triples) list.push_back(coefficients_json(c));
+    return list;
+}
+
+template <class I>
+Json basis_json(const Basis<I>& basis) {
+    Json rows = Json::array();
+    for (const auto& row : basis) rows.push_back(Json::array({enclosure_json(row[0]), enclosure_json(row[1]), enclosure_json(row[2])}));
+    return rows;
+}
+
+// Each family proved a packing at p against the best: "beats" when the gap is certainly
+// positive, "ties" otherwise, with the reason.
+template <class I>
+Json comparison_json(const BestLattice<I>& best) {
+    Json list = Json::array();
+    const I& phi = best_phi(best);
+    for (std::size_t k = 0; k < best.families.size(); ++k) {
+        const FamilyEntry<I>& entry = best.families[k];
+        if (entry.check.verdict != Outcome::proved || !entry.lattice.phi) continue;
+        const I gap = phi - *entry.lattice.phi;
+        Json item{{"family", to_string(entry.lattice.family)}, {"phi", enclosure_json(*entry.lattice.phi)},
+                  {"gap", enclosure_json(gap)}};
+        if (best.source == BestSource::family && best.index == k) {
+            item["relation"] = "ties";
+            item["reason"] = "it is the best lattice";
+        } else if (certainly_positive(gap)) {
+            item["relation"] = "beats";
+        } else {
+            item["relation"] = "ties";
+            item["reason"] = "phi not separated from the best lattice's at this precision";
+        }
+        list.push_back(item);
+    }
+    return list;
+}
+
+template <class I>
+Json not_packings_json(const BestLattice<I>& best) {
+    Json list = Json::array();
+    for (const FamilyEntry<I>& entry : best.families) {
+        if (entry.check.verdict == Outcome::proved) continue;
+        list.push_back({{"family", to_string(entry.lattice.family)},
+                        {"verdict", entry.lattice.status == Outcome::proved ? packing_word(entry.check.verdict) : "no lattice"},
+                        {"reason", entry.lattice.status == Outcome::proved ? entry.check.reason : entry.lattice.message}});
+    }
+    return list;
+}
+
+template <class I>
+Json best_json(const BestLattice<I>& best, double search_seconds, double total_seconds) {
+    Json document;
+    document["status"] = best.status == Outcome::proved ? "certified" : "undecided";
+    document["message"] = best.message;
+    long certified = 0, overlapping = 0;
+    for (const SearchLattice<I>& lattice : best.checked) {
+        certified += lattice.check.verdict == Outcome::proved;
+        overlapping += lattice.check.verdict == Outcome::refuted;
+    }
+    document["candidates"] = {{"found", best.search.candidates.size()},
+                              {"checked", best.checked.size()},
+                              {"certified", certified},
+                              {"overlapping", overlapping},
+                              {"rejected", best.rejected},
+                              {"rejected_means", "not denser in floating point than the best certified family, a repeat, "
+                                                 "or beyond the first four checked"}};
+    document["timing"] = {{"search_seconds", search_seconds}, {"total_seconds", total_seconds}};
+    document["outside_domain"] = best.outside_domain;
+    document["not_packings"] = not_packings_json(best);
+    if (best.status != Outcome::proved) return document;
+    document["admissible"] = true;
+    document["phi"] = enclosure_json(best_phi(best));
+    document["basis"] = basis_json(best_basis(best));
+    document["configuration"] = configuration_text(best.configuration);
+    if (best.source == BestSource::family) {
+        const FamilyEntry<I>& entry = best.families[best.index];
+        document["family"] = to_string(entry.lattice.family);
+        document["contacts"] = {{"count", entry.check.contacts()}, {"vectors", triples_json(entry.check.contact_vectors)}};
+    } else {
+        const SearchLattice<I>& lattice = best.checked[best.index];
+        document["family"] = nullptr;
+        document["start"] = lattice.guess.start;
+        // The exact lattice clears every contact by about 2^-39: no vector has norm exactly 2.
+        document["contacts"] = {{"count", lattice.check.contacts()},
+                                {"near_contacts_of_the_guess", triples_json(lattice.guess.near_contacts)},
+                                {"note", "the certified basis is the guess scaled by 1 + 2^-40, so its near-contacts clear 2"}};
+    }
+    document["beats"] = comparison_json(best);
+    document["locally_optimal"] = nullptr;
+    document["locally_optimal_reason"] = "not certified: the KKT certification of item 3 is not implemented yet";
+    return document;
+}
+
+template <class I>
+void print_table(const BestLattice<I>& best, int digits) {
+    auto text = [digits](const I& x) {
+        const DecimalEnclosure d = to_decimal(x, digits);
+        return "[" + d.lo + ", " + d.hi + "]";
+    };
+    std::cout << "status       " << (best.status == Outcome::proved ? "certified" : "undecided") << "  (" << best.message << ")\n";
+    if (best.status == Outcome::proved) {
+        std::cout << "best         " << best_name(best) << "\n";
+        std::cout << "phi          " << text(best_phi(best)) << "\n";
+        std::cout << "configuration " << configuration_text(best.configuration) << "\n";
+        const Basis<I> basis = best_basis(best);
+        for (int i = 0; i < 3; ++i)
+            std::cout << "basis e" << i + 1 << "     " << text(basis[i][0]) << ", " << text(basis[i][1]) << ", " << text(basis[i][2]) << "\n";
+        for (const FamilyEntry<I>& entry : best.families) {
+            if (entry.check.verdict != Outcome::proved || !entry.lattice.phi) continue;
+            const I gap = best_phi(best) - *entry.lattice.phi;
+            std::cout << "  vs " << to_string(entry.lattice.family) << "      phi " << text(*entry.lattice.phi) << "  gap "
+                      << text(gap) << (certainly_positive(gap) ? "  beats" : "  ties") << "\n";
+        }
+    }
+    for (const FamilyEntry<I>& entry : best.families)
+        if (entry.check.verdict != Outcome::proved)
+            std::cout << "  " << to_string(entry.lattice.family) << "         not a certified packing here\n";
+    std::cout << "candidates   " << best.search.candidates.size() << " found, " << best.checked.size() << " checked, "
+              << best.rejected << " rejected\n";
+}
+
+int run(const BestCommandOptions& options) {
+    const Rational p = parse_p(options.p);
+    if (options.starts < 0 || options.starts > max_starts)
+        throw InputError("--starts: 0 to " + std::to_string(max_starts) + " random starts, got " + std::to_string(options.starts));
+    if (!options.certificate.empty()) {
+        require_writable_target(options.certificate);
+        require_rounding_self_test();
+    }
+    return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
+        using I = typename std::decay_t<decltype(field)>::Interval;
+        BestOptions best_options;
+        best_options.search.seed = options.seed;
+        best_options.search.random_starts = options.starts;
+        std::cerr << "best: certifying the families and searching (" << options.starts << " random starts)\n";
+        const auto start = std::chrono::steady_clock::now();
+        const BestLattice<I> best = find_best_lattice(p, field, best_options);
+        const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        Json document = header_json("best", field, digits);
+        document["p"] = options.p;
+        document["p_exact"] = rational_text(p);
+        document["seed"] = options.seed;
+        document.update(best_json(best, best.search.seconds, total));
+        if (!options.certificate.empty() && best.status == Outcome::proved) {
+            try {
+                if (best.source == BestSource::family)
+                    write_certificate(options.certificate, family_certificate(best.families[best.index].lattice, p, field, digits));
+                else
+                    write_certificate(options.certificate,
+                                      lattice_certificate(best.checked[best.index].check, best.checked[best.index].basis, p, field, digits));
+            } catch (const std::runtime_error& error) {
+                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
+            }
+        }
+        if (options.json)
+            print_json(document);
+        else
+            print_table(best, table_digits(digits, !options.digits.empty()));
+        if (best.status != Outcome::proved) throw Failure(exit_undecided, "best: undecided: " + best.message);
+        return exit_ok;
+    });
+}
+
+void add_best(CLI::App& app) {
+    auto options = std::make_shared<BestCommandOptions>();
+    CLI::App* command = app.add_subcommand("best", "The densest lattice packing superpack certifies at p: families and a search");
+    command->add_option("--p", options->p, "deformation parameter 1/2 <= p <= 10^6: a decimal or a fraction")->required();
+    command->add_option("--digits", options->digits,
+                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
+    command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->add_option("--certificate", options->certificate,
+                        "write the certificate of the best lattice (family-lattice or lattice-check claim)");
+    command->add_option("--seed", options->seed, "seed of the search's random starts and directions (default 1)");
+    command->add_option("--starts", options->starts,
+                        "random starts besides the families, 0 to " + std::to_string(max_starts) + " (default 16)");
+    command->callback([options] { run(*options); });
+}
+
+const SubcommandRegistration registration("best", add_best);
+
+}  // namespace
+
+}  // namespace superpack::cli

@@ -1,0 +1,148 @@
+#include "superpack/problems/best.hpp"
+
+#include <cmath>
+
+namespace superpack {
+
+namespace {
+
+// Extra starts besides the families: FCC (the sphere's optimum) and the cubic lattice of the
+// cube, each scaled by the search.
+std::vector<SearchStart> classical_starts() {
+    return {{"FCC", DoubleBasis{{{1, 1, 0}, {1, 0, 1}, {0, 1, 1}}}}, {"cubic", DoubleBasis{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}}};
+}
+
+template <class I>
+DoubleBasis midpoint_basis(const Basis<I>& basis) {
+    DoubleBasis b{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) b[i][j] = mid_double(basis[i][j]);
+    return b;
+}
+
+// The guess's double entries are dyadic rationals, so the exact basis is the guess itself,
+// scaled up by 1 + 2^-40: near-contacts of norm 2 (to rounding) then clear 2 by about 2^-39,
+// far above the enclosure widths, and the density drops by a relative 3 * 2^-40.
+Basis<Rational> exact_scaled(const DoubleBasis& guess) {
+    const Rational factor = Rational(1) + Rational(1, mpz_class(1) << 40);
+    Basis<Rational> exact{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) exact[i][j] = Rational(guess[i][j]) * factor;
+    return exact;
+}
+
+template <class Field, class I = typename Field::Interval>
+BestLattice<I> find_best(const Rational& p, const Field& field, const BestOptions& options) {
+    if (p < Rational(1, 2))
+        throw InputError("best: p = " + decimal_or_fraction_text(p) +
+                         " is below 1/2: the search and the lattice check need a convex superball (p >= 1/2)");
+    if (p > Rational(1000000))
+        throw InputError("best: p = " + decimal_or_fraction_text(p) + " is beyond the supported p <= 10^6 of the search");
+    BestLattice<I> best;
+    const I p_interval = field.rational(p);
+    std::vector<SearchStart> starts;
+    for (Family family : all_families()) {
+        try {
+            require_in_domain(family, p);
+        } catch (const InputError&) {
+            best.outside_domain.push_back(to_string(family));
+            continue;
+        }
+        FamilyLattice<I> lattice = enclose_family(family, p, field);
+        LatticeCheck<I> check = check_family_lattice(lattice, p_interval);
+        if (lattice.basis) starts.push_back({to_string(family), midpoint_basis(*lattice.basis)});
+        best.families.push_back({std::move(lattice), std::move(check)});
+    }
+    for (const SearchStart& start : classical_starts()) starts.push_back(start);
+    const I volume = enclose_ball_volume(p_interval, 3);
+    best.search = search_dense_lattices(mid_double(p_interval), mid_double(volume), starts, options.search);
+
+    // The densest family proved a packing is the bar a search lattice must pass.
+    std::optional<std::size_t> leader;
+    for (std::size_t k = 0; k < best.families.size(); ++k) {
+        const FamilyEntry<I>& entry = best.families[k];
+        if (entry.check.verdict != Outcome::proved || !entry.lattice.phi) continue;
+        if (!leader || mid_double(*entry.lattice.phi) > mid_double(*best.families[*leader].lattice.phi)) leader = k;
+    }
+    const double bar = leader ? mid_double(*best.families[*leader].lattice.phi) : 0;
+    constexpr std::size_t most_checked = 4;
+    for (const SearchCandidate& candidate : best.search.candidates) {
+        bool repeated = false;
+        for (const SearchLattice<I>& done : best.checked)
+            repeated = repeated || std::fabs(done.guess.density - candidate.density) <= 1e-9 * candidate.density;
+        if (!(candidate.density > bar * (1 + 1e-10)) || repeated || best.checked.size() >= most_checked) {
+            ++best.rejected;
+            continue;
+        }
+        const Basis<Rational> exact = exact_scaled(candidate.basis);
+        LatticeCheck<I> check = check_exact_lattice(exact, p, field);
+        const I phi = volume / abs(determinant(enclose_basis(exact, field)));
+        best.checked.push_back({candidate, exact, std::move(check), phi});
+    }
+
+    std::optional<double> top;
+    if (leader) {
+        best.source = BestSource::family;
+        best.index = *leader;
+        top = bar;
+    }
+    for (std::size_t k = 0; k < best.checked.size(); ++k) {
+        const SearchLattice<I>& lattice = best.checked[k];
+        if (lattice.check.verdict != Outcome::proved) continue;
+        if (!top || mid_double(lattice.phi) > *top) {
+            best.source = BestSource::search;
+            best.index = k;
+            top = mid_double(lattice.phi);
+        }
+    }
+    if (!top) {
+        best.status = Outcome::undecided;
+        best.message = "no lattice was certified a packing at this p";
+        return best;
+    }
+    best.status = Outcome::proved;
+    if (best.source == BestSource::family) {
+        best.configuration = match_configuration(best.families[best.index].check.contact_vectors);
+        best.message = "the densest certified lattice is the family " + best_name(best) +
+                       "; the search found nothing denser";
+    } else {
+        best.configuration = match_configuration(best.checked[best.index].guess.near_contacts);
+        best.message = "a search lattice, certified admissible, is denser than every certified family";
+    }
+    return best;
+}
+
+}  // namespace
+
+BestLattice<DInterval> find_best_lattice(const Rational& p, const DoubleField& field, const BestOptions& options) {
+    return find_best(p, field, options);
+}
+BestLattice<Ball> find_best_lattice(const Rational& p, const BallField& field, const BestOptions& options) {
+    return find_best(p, field, options);
+}
+
+template <class I>
+const I& best_phi(const BestLattice<I>& best) {
+    return best.source == BestSource::family ? *best.families[best.index].lattice.phi : best.checked[best.index].phi;
+}
+
+template <class I>
+Basis<I> best_basis(const BestLattice<I>& best) {
+    if (best.source == BestSource::family) return *best.families[best.index].lattice.basis;
+    return enclose_basis(best.checked[best.index].basis, field_of(best.checked[best.index].phi));
+}
+
+template <class I>
+std::string best_name(const BestLattice<I>& best) {
+    if (best.source == BestSource::family) return to_string(best.families[best.index].lattice.family);
+    return "search lattice (from " + best.checked[best.index].guess.start + ")";
+}
+
+template const DInterval& best_phi(const BestLattice<DInterval>&);
+template const Ball& best_phi(const BestLattice<Ball>&);
+template Basis<DInterval> best_basis(const BestLattice<DInterval>&);
+template Basis<Ball> best_basis(const BestLattice<Ball>&);
+template std::string best_name(const BestLattice<DInterval>&);
+template std::string best_name(const BestLattice<Ball>&);
+
+}  // namespace superpack
