@@ -184,6 +184,8 @@ TEST_CASE("--json: usage errors too print exactly one JSON document") {
 
 TEST_CASE("limits are stated and enforced, contradictions refused, undecided is exit 4") {
     check_error("density --family C0 --p 1.5 --digits 100000", 2, "from 1 to");
+    check_error("best --p 0.4", 2, "below 1/2");
+    check_error("best --p 1 --starts 5000", 2, "--starts: 0 to 1000");
     check_error("density --family C0 --p " + std::string(400, '1'), 2, "at most 100 characters");
     // (--scan prints CSV: with --json it is a contradiction, checked last.)
     check_error("superdisk --scan 1:2:0 --csv", 2, "step", false);

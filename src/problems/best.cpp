@@ -31,6 +31,38 @@ Basis<Rational> exact_scaled(const DoubleBasis& guess) {
     return exact;
 }
 
+// The fraction with denominator at most 1000 nearest x by continued fractions, if it is within
+// 1e-9 of x. Lattices at p = 1/2 (where norms are rational) have rational critical bases.
+std::optional<Rational> small_fraction(double x) {
+    const double whole = std::floor(x);
+    long p0 = 1, q0 = 0, p1 = static_cast<long>(whole), q1 = 1;
+    double rest = x - whole;
+    for (int step = 0; step < 20 && std::fabs(x - static_cast<double>(p1) / q1) > 1e-12 && rest > 1e-12; ++step) {
+        const double inverse = 1 / rest;
+        const long a = static_cast<long>(std::floor(inverse));
+        rest = inverse - a;
+        const long p2 = a * p1 + p0, q2 = a * q1 + q0;
+        if (q2 > 1000) break;
+        p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+    }
+    if (std::fabs(x - static_cast<double>(p1) / q1) > 1e-9) return std::nullopt;
+    return Rational(p1, q1);
+}
+
+// The guess with every entry replaced by its small fraction, when each has one: the exact
+// critical lattice itself where it is rational (then its contacts are decided exactly).
+std::optional<Basis<Rational>> snapped(const DoubleBasis& guess) {
+    Basis<Rational> exact{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const std::optional<Rational> fraction = small_fraction(guess[i][j]);
+            if (!fraction) return std::nullopt;
+            exact[i][j] = *fraction;
+        }
+    if (determinant(exact) == 0) return std::nullopt;
+    return exact;
+}
+
 template <class Field, class I = typename Field::Interval>
 BestLattice<I> find_best(const Rational& p, const Field& field, const BestOptions& options) {
     if (p < Rational(1, 2))
@@ -74,8 +106,15 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
             ++best.rejected;
             continue;
         }
-        const Basis<Rational> exact = exact_scaled(candidate.basis);
-        LatticeCheck<I> check = check_exact_lattice(exact, p, field);
+        // A rational critical lattice is checked as it is; any other guess scaled up.
+        Basis<Rational> exact = exact_scaled(candidate.basis);
+        LatticeCheck<I> check;
+        const std::optional<Basis<Rational>> fraction = snapped(candidate.basis);
+        if (fraction) check = check_exact_lattice(*fraction, p, field);
+        if (fraction && check.verdict == Outcome::proved)
+            exact = *fraction;
+        else
+            check = check_exact_lattice(exact, p, field);
         const I phi = volume / abs(determinant(enclose_basis(exact, field)));
         best.checked.push_back({candidate, exact, std::move(check), phi});
     }
@@ -107,7 +146,8 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
                        "; the search found nothing denser";
     } else {
         best.configuration = match_configuration(best.checked[best.index].guess.near_contacts);
-        best.message = "a search lattice, certified admissible, is denser than every certified family";
+        best.message = leader ? "a search lattice, certified admissible, is denser than every certified family"
+                              : "a search lattice, certified admissible; no published family is certified a packing here";
     }
     return best;
 }

@@ -1,9 +1,11 @@
 // superpack best: the densest lattice packing of the superball at p that superpack can certify
 // (NOTES.md, "Densest lattice search"). The published families (every one whose domain holds p)
 // are certified as usual; a floating-point search (problems/lattice_search.hpp) looks for denser
-// lattices; a search lattice counts only once made exact (its double entries, scaled up by
-// 1 + 2^-40 so that its near-contacts clear 2) and proved admissible by the lattice check, and
-// only if it is denser than every certified family. The search only guesses: what is reported
+// lattices; a search lattice counts only once made exact and proved admissible by the lattice
+// check, and only if it is denser than every certified family. Made exact means: its entries
+// replaced by fractions of denominator <= 1000 when each is within 1e-9 of one and that lattice
+// is admissible (a rational critical lattice, as at p = 1/2, with its contacts decided exactly);
+// otherwise its double entries scaled up by 1 + 2^-40, so that its near-contacts clear 2. The search only guesses: what is reported
 // is what was proved, whatever the search found.
 #pragma once
 #include <optional>
@@ -26,7 +28,7 @@ struct FamilyEntry {
 template <class I>
 struct SearchLattice {
     SearchCandidate guess;
-    Basis<Rational> basis;  // the guess's entries (exact dyadic rationals) times 1 + 2^-40
+    Basis<Rational> basis;  // the guess snapped to small fractions, or its entries times 1 + 2^-40
     LatticeCheck<I> check;
     I phi;                  // V(p) / |det basis|, a packing density when check.verdict is proved
 };

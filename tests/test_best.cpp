@@ -1,0 +1,98 @@
+// superpack best: Minkowski's configurations recognised exactly, the densest certified lattice at
+// the two points where the answer is known (Gauss at p = 1, Minkowski at p = 1/2), and a search
+// that finds, on its own, the seven-pair lattice at p = 0.6 where no published family of Jiao et
+// al. is a packing.
+#include "support.hpp"
+#include "superpack/problems/best.hpp"
+
+using namespace superpack;
+using namespace superpack::test;
+
+namespace {
+
+// The triples of a configuration in another basis: c U^-1 for the basis change b' = U b, here
+// given directly as the images of e1, e2, e3.
+std::vector<Coefficients> in_basis(const std::vector<Coefficients>& set, const Transform& images) {
+    std::vector<Coefficients> out;
+    for (const Coefficients& c : set) {
+        Coefficients x{};
+        for (int j = 0; j < 3; ++j) x[j] = c[0] * images[0][j] + c[1] * images[1][j] + c[2] * images[2][j];
+        out.push_back(x);
+        out.push_back({-x[0], -x[1], -x[2]});
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("contact configurations: Minkowski's six and seven pairs in any basis, and neither") {
+    const std::vector<Coefficients> six{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 1, -1}, {1, 0, -1}, {1, -1, 0}};
+    const std::vector<Coefficients> seven{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}, {1, 1, 1}};
+    const Transform identity{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    const Transform skew{{{1, 2, 0}, {0, 1, 0}, {-1, 3, 1}}};  // det 1
+    CHECK(match_configuration(in_basis(six, identity)).configuration == Configuration::six_pairs);
+    CHECK(match_configuration(in_basis(six, skew)).configuration == Configuration::six_pairs);
+    CHECK(match_configuration(in_basis(seven, skew)).configuration == Configuration::seven_pairs);
+    const ConfigurationMatch match = match_configuration(in_basis(seven, skew));
+    REQUIRE(match.basis);
+    // Six pairs with only three zero-sum triples (A6 has four): not Minkowski's first case.
+    const std::vector<Coefficients> other{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}};
+    const ConfigurationMatch neither = match_configuration(in_basis(other, skew));
+    CHECK(neither.configuration == Configuration::other);
+    CHECK(neither.pairs == 6);
+    CHECK(configuration_text(neither) == "6 pairs, not one of Minkowski's two configurations");
+    // Seven pairs in a sublattice of index 2 are not the configuration of a basis.
+    const Transform doubled{{{2, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    CHECK(match_configuration(in_basis(seven, doubled)).configuration == Configuration::other);
+}
+
+TEMPLATE_TEST_CASE("best at p = 1: the FCC lattice, phi = pi / sqrt(18) (Gauss)", "", Binary64, Arb128) {
+    using I = typename TestType::Interval;
+    const TestType field;
+    BestOptions options;
+    options.search.random_starts = 2;
+    const BestLattice<I> best = find_best_lattice(Rational(1), field, options);
+    REQUIRE(best.status == Outcome::proved);
+    const I fcc = field.pi() / sqrt(field.integer(18));
+    CHECK(overlaps(best_phi(best), fcc));
+    CHECK(best.source == BestSource::family);  // C0 = C1 = FCC at p = 1; no search lattice passes it
+    CHECK(best.configuration.configuration == Configuration::six_pairs);
+    CHECK(best.search.candidates.size() > 0);
+}
+
+TEMPLATE_TEST_CASE("best at p = 1/2: Minkowski's octahedron lattice, phi = 18/19", "", Binary64, Arb128) {
+    using I = typename TestType::Interval;
+    const TestType field;
+    BestOptions options;
+    options.search.random_starts = 2;
+    const BestLattice<I> best = find_best_lattice(Rational(1, 2), field, options);
+    REQUIRE(best.status == Outcome::proved);
+    CHECK(contains(best_phi(best), field.rational(Rational(18, 19))));
+    // O1's enclosed parameters cannot decide its contacts at p = 1/2; the search's guess snaps
+    // to the exact rational basis, whose 14 contacts the lattice check decides exactly.
+    REQUIRE(best.source == BestSource::search);
+    CHECK(best.checked[best.index].check.contacts() == 14);
+    CHECK(best.configuration.configuration == Configuration::seven_pairs);
+}
+
+TEST_CASE("best at p = 0.6: the search finds a seven-pair lattice denser than every certified family") {
+    const DoubleField field;
+    BestOptions options;
+    options.search.random_starts = 2;
+    const BestLattice<DInterval> best = find_best_lattice(Rational(3, 5), field, options);
+    REQUIRE(best.status == Outcome::proved);
+    CHECK(best.configuration.configuration == Configuration::seven_pairs);
+    for (const FamilyEntry<DInterval>& entry : best.families)
+        if (entry.check.verdict == Outcome::proved && entry.lattice.phi) CHECK(certainly_less(*entry.lattice.phi, best_phi(best)));
+    // Dostert & Vallentin's 14-neighbour lattice at p = 0.6 has phi = 0.8786104367445...
+    // (mpmath, scripts/golden_best.py); the certified lattice is it scaled by 1 + 2^-40.
+    const double d14 = 0.878610436744504060005267835917;
+    CHECK(best_phi(best).upper() < d14 + 1e-15);
+    CHECK(best_phi(best).lower() > d14 - 1e-11);
+}
+
+TEST_CASE("best refuses p below 1/2 and beyond 10^6") {
+    const DoubleField field;
+    CHECK_THROWS_AS(find_best_lattice(Rational(2, 5), field, BestOptions{}), InputError);
+    CHECK_THROWS_AS(find_best_lattice(Rational(2000000), field, BestOptions{}), InputError);
+}
