@@ -151,6 +151,7 @@ void print_table(const BestLattice<I>& best, int digits) {
 
 int run(const BestCommandOptions& options) {
     const Rational p = parse_p(options.p);
+    require_best_domain(p);
     if (options.starts < 0 || options.starts > max_starts)
         throw InputError("--starts: 0 to " + std::to_string(max_starts) + " random starts, got " + std::to_string(options.starts));
     if (!options.certificate.empty()) {

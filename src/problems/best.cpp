@@ -65,11 +65,7 @@ std::optional<Basis<Rational>> snapped(const DoubleBasis& guess) {
 
 template <class Field, class I = typename Field::Interval>
 BestLattice<I> find_best(const Rational& p, const Field& field, const BestOptions& options) {
-    if (p < Rational(1, 2))
-        throw InputError("best: p = " + decimal_or_fraction_text(p) +
-                         " is below 1/2: the search and the lattice check need a convex superball (p >= 1/2)");
-    if (p > Rational(1000000))
-        throw InputError("best: p = " + decimal_or_fraction_text(p) + " is beyond the supported p <= 10^6 of the search");
+    require_best_domain(p);
     BestLattice<I> best;
     const I p_interval = field.rational(p);
     std::vector<SearchStart> starts;
@@ -153,6 +149,14 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
 }
 
 }  // namespace
+
+void require_best_domain(const Rational& p) {
+    if (p < Rational(1, 2))
+        throw InputError("best: p = " + decimal_or_fraction_text(p) +
+                         " is below 1/2: the search and the lattice check need a convex superball (p >= 1/2)");
+    if (p > Rational(1000000))
+        throw InputError("best: p = " + decimal_or_fraction_text(p) + " is beyond the supported p <= 10^6 of the search");
+}
 
 BestLattice<DInterval> find_best_lattice(const Rational& p, const DoubleField& field, const BestOptions& options) {
     return find_best(p, field, options);

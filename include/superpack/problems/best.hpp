@@ -53,7 +53,9 @@ struct BestOptions {
     SearchOptions search;
 };
 
-// p >= 1/2 and p <= 10^6 (InputError otherwise).
+// The search's domain, 1/2 <= p <= 10^6: throws InputError outside it.
+void require_best_domain(const Rational& p);
+// Requires the domain above.
 BestLattice<DInterval> find_best_lattice(const Rational& p, const DoubleField& field, const BestOptions& options);
 BestLattice<Ball> find_best_lattice(const Rational& p, const BallField& field, const BestOptions& options);
 
