@@ -96,3 +96,29 @@ TEST_CASE("best refuses p below 1/2 and beyond 10^6") {
     CHECK_THROWS_AS(find_best_lattice(Rational(2, 5), field, BestOptions{}), InputError);
     CHECK_THROWS_AS(find_best_lattice(Rational(2000000), field, BestOptions{}), InputError);
 }
+
+TEST_CASE("local optimality: certified for the 14-neighbour lattice at p = 0.6 and C1 at p = 2, not for C0 at p = 2 (a saddle)") {
+    const DoubleField field;
+    BestOptions options;
+    options.search.random_starts = 2;
+    for (const Rational& p : {Rational(3, 5), Rational(2)}) {
+        const BestLattice<DInterval> best = find_best_lattice(p, field, options);
+        REQUIRE(best.status == Outcome::proved);
+        REQUIRE(best.local);
+        INFO(best.local->reason);
+        CHECK(best.local->verdict == Outcome::proved);
+        // The critical lattice is at least as dense as the certified best lattice.
+        CHECK(!certainly_less(*best.local->phi, best_phi(best)));
+    }
+    // C0 at p = 2: the KKT point exists, but det decreases along a tangent direction.
+    const FamilyLattice<DInterval> c0 = enclose_family(Family::C0, Rational(2), field);
+    const LatticeCheck<DInterval> check = check_family_lattice(c0, field.integer(2));
+    REQUIRE(check.contacts() == 12);
+    DoubleBasis guess{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) guess[i][j] = mid_double((*c0.basis)[i][j]);
+    const LocalOptimum<DInterval> saddle = certify_local_optimum(guess, check.contact_vectors, field.integer(2));
+    CHECK(saddle.verdict == Outcome::undecided);
+    INFO(saddle.reason);
+    CHECK(saddle.reason.find("second-order") != std::string::npos);
+}

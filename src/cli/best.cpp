@@ -116,8 +116,15 @@ Json best_json(const BestLattice<I>& best, double search_seconds, double total_s
                                 {"note", "the certified basis is the guess scaled by 1 + 2^-40, so its near-contacts clear 2"}};
     }
     document["beats"] = comparison_json(best);
-    document["locally_optimal"] = nullptr;
-    document["locally_optimal_reason"] = "not certified: the KKT certification of item 3 is not implemented yet";
+    const LocalOptimum<I>& local = *best.local;
+    document["locally_optimal"] = local.verdict == Outcome::proved ? Json(true) : Json(nullptr);
+    document["locally_optimal_reason"] = local.reason;
+    if (local.verdict == Outcome::proved) {
+        Json multipliers = Json::array();
+        for (const I& mu : local.multipliers) multipliers.push_back(enclosure_json(mu));
+        document["critical_lattice"] = {{"phi", enclosure_json(*local.phi)}, {"basis", basis_json(*local.basis)},
+                                        {"multipliers", multipliers}, {"rho", local.rho}};
+    }
     return document;
 }
 
@@ -132,6 +139,10 @@ void print_table(const BestLattice<I>& best, int digits) {
         std::cout << "best         " << best_name(best) << "\n";
         std::cout << "phi          " << text(best_phi(best)) << "\n";
         std::cout << "configuration " << configuration_text(best.configuration) << "\n";
+        std::cout << "locally optimal " << (best.local->verdict == Outcome::proved ? "yes" : "not certified") << "  ("
+                  << best.local->reason << ")\n";
+        if (best.local->phi && best.local->verdict == Outcome::proved)
+            std::cout << "critical phi " << text(*best.local->phi) << "\n";
         const Basis<I> basis = best_basis(best);
         for (int i = 0; i < 3; ++i)
             std::cout << "basis e" << i + 1 << "     " << text(basis[i][0]) << ", " << text(basis[i][1]) << ", " << text(basis[i][2]) << "\n";

@@ -137,11 +137,15 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
     }
     best.status = Outcome::proved;
     if (best.source == BestSource::family) {
+        const FamilyEntry<I>& entry = best.families[best.index];
+        best.local = certify_local_optimum(midpoint_basis(*entry.lattice.basis), entry.check.contact_vectors, p_interval);
         best.configuration = match_configuration(best.families[best.index].check.contact_vectors);
         best.message = "the densest certified lattice is the family " + best_name(best) +
                        "; the search found nothing denser";
     } else {
-        best.configuration = match_configuration(best.checked[best.index].guess.near_contacts);
+        const SearchCandidate& guess = best.checked[best.index].guess;
+        best.local = certify_local_optimum(guess.basis, guess.near_contacts, p_interval);
+        best.configuration = match_configuration(guess.near_contacts);
         best.message = leader ? "a search lattice, certified admissible, is denser than every certified family"
                               : "a search lattice, certified admissible; no published family is certified a packing here";
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "superpack/solve/approximate_inverse.hpp"
@@ -152,9 +153,11 @@ double size_of(const std::vector<double>& r) {
     return largest;
 }
 
-bool polish(DoubleBasis& b, double p, const std::vector<Triple>& active) {
+}  // namespace
+
+std::optional<KktPoint> kkt_point(const DoubleBasis& b, double p, const std::vector<std::array<long, 3>>& active) {
     const std::size_t n = 9 + active.size();
-    if (active.empty() || active.size() > 9) return false;
+    if (active.empty() || active.size() > 9) return std::nullopt;
     const KktSystem system{p, active};
     std::vector<double> x(n, 0.0);
     for (int k = 0; k < 9; ++k) x[k] = b[k / 3][k % 3];
@@ -177,7 +180,7 @@ bool polish(DoubleBasis& b, double p, const std::vector<Triple>& active) {
             for (int k = 0; k < 9; ++k) right[i] += gradient[i][k] * cofactor[k];
         }
         const auto inverse = approximate_inverse(normal);
-        if (!inverse) return false;
+        if (!inverse) return std::nullopt;
         for (std::size_t i = 0; i < active.size(); ++i)
             for (std::size_t j = 0; j < active.size(); ++j) x[9 + i] += (*inverse)(i, j) * right[j];
     }
@@ -194,21 +197,23 @@ bool polish(DoubleBasis& b, double p, const std::vector<Triple>& active) {
             for (std::size_t i = 0; i < n; ++i) jacobian(i, j) = (r_up[i] - r_down[i]) / (2 * h);
         }
         const auto inverse = approximate_inverse(jacobian);
-        if (!inverse) return false;
+        if (!inverse) return std::nullopt;
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) x[i] -= (*inverse)(i, j) * r[j];
     }
-    if (!(size_of(system.residual(x)) < 1e-12)) return false;
+    if (!(size_of(system.residual(x)) < 1e-12)) return std::nullopt;
     for (std::size_t i = 0; i < active.size(); ++i)
-        if (!(x[9 + i] > 0)) return false;
-    DoubleBasis polished{};
-    for (int k = 0; k < 9; ++k) polished[k / 3][k % 3] = x[k];
+        if (!(x[9 + i] > 0)) return std::nullopt;
+    KktPoint point;
+    for (int k = 0; k < 9; ++k) point.basis[k / 3][k % 3] = x[k];
+    point.multipliers.assign(x.begin() + 9, x.end());
     // The polished lattice must still have the active vectors as its shortest ones.
-    if (!(shortest_norm(polished, p) > 2 * (1 - 1e-12)) || !(objective(polished, p) <= objective(b, p) + 1e-12))
-        return false;
-    b = polished;
-    return true;
+    if (!(shortest_norm(point.basis, p) > 2 * (1 - 1e-12)) || !(objective(point.basis, p) <= objective(b, p) + 1e-12))
+        return std::nullopt;
+    return point;
 }
+
+namespace {
 
 std::vector<Triple> near_shortest(const DoubleBasis& b, double p, double tolerance) {
     const double shortest = shortest_norm(b, p);
@@ -270,9 +275,9 @@ SearchResult search_dense_lattices(double p, double volume, const std::vector<Se
         // The pattern search stops near, not at, a kink: the active set is guessed at growing
         // tolerances, and the first that Newton's method turns into a KKT point is kept.
         for (double tolerance : {1e-7, 1e-5, 1e-4, 1e-3, 1e-2}) {
-            DoubleBasis polished = b;
-            if (polish(polished, p, near_shortest(b, p, tolerance))) {
-                candidate.basis = normalised(polished, p);
+            const std::optional<KktPoint> point = kkt_point(b, p, near_shortest(b, p, tolerance));
+            if (point) {
+                candidate.basis = normalised(point->basis, p);
                 candidate.polished = true;
                 break;
             }

@@ -15,6 +15,7 @@
 #include "superpack/geometry/contact_configuration.hpp"
 #include "superpack/problems/family_lattice_check.hpp"
 #include "superpack/problems/lattice_search.hpp"
+#include "superpack/problems/local_optimality.hpp"
 
 namespace superpack {
 
@@ -47,6 +48,9 @@ struct BestLattice {
     BestSource source = BestSource::family;
     std::size_t index = 0;  // into families or checked
     ConfigurationMatch configuration;  // of the best lattice's contacts (search: near contacts, numerically)
+    // Whether the critical lattice at the best one (its KKT point for its contacts) is a
+    // certified strict local minimiser of |det| (problems/local_optimality.hpp).
+    std::optional<LocalOptimum<I>> local;
 };
 
 struct BestOptions {

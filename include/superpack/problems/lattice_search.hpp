@@ -10,6 +10,7 @@
 // ||c B||_(2p) = 2 for the near-shortest coefficient vectors c.
 #pragma once
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,15 @@ struct SearchResult {
 // p >= 1/2 as a double, volume V(p) as a double (only for the reported float density).
 SearchResult search_dense_lattices(double p, double volume, const std::vector<SearchStart>& starts,
                                    const SearchOptions& options);
+
+// A KKT point of min det B subject to ||c_i B||_(2p) = 2 for the `active` triples (at most
+// nine), found by Newton's method from b: its basis and multipliers, all positive; nothing
+// when Newton did not converge, a multiplier is not positive, or another vector got shorter.
+struct KktPoint {
+    DoubleBasis basis{};
+    std::vector<double> multipliers;
+};
+std::optional<KktPoint> kkt_point(const DoubleBasis& b, double p, const std::vector<std::array<long, 3>>& active);
 
 // The shortest 2p-norm over the lattice vectors c B with |c_i| <= 2, and the norm of one vector.
 double shortest_norm(const DoubleBasis& basis, double p);
