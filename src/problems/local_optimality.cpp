@@ -7,11 +7,27 @@
 
 namespace superpack {
 
+namespace {
+
+// sign(u) |u|^e, with the derivative e |u|^(e-1) du of the whole (not of u times |u|^(e-1),
+// whose product rule leaves an unbounded term at u = 0 although the function is C^1 for e > 1:
+// C0's contact (0, 0, 2) has two zero coordinates).
+template <class I>
+I signed_power(const I& u, const I& e) {
+    return pow_signed(u, e);
+}
+template <class I>
+Jet<I> signed_power(const Jet<I>& u, const I& e) {
+    return {pow_signed(u.value, e), e * pow_abs(u.value, e - field_of(e).integer(1)) * u.derivative};
+}
+
+}  // namespace
+
 template <class T, class P>
 std::vector<T> kkt_equations(const std::vector<T>& x, const std::vector<Coefficients>& active, const P& p) {
     const auto field = field_of(p);
     const P two_p = field.integer(2) * p;
-    const P power = two_p - field.integer(2);
+    const P power = two_p - field.integer(1);
     auto entry = [&](int k, int j) -> const T& { return x[3 * k + j]; };
     std::vector<T> equations;
     for (int k = 0; k < 3; ++k)
@@ -29,7 +45,7 @@ std::vector<T> kkt_equations(const std::vector<T>& x, const std::vector<Coeffici
         const T& mu = x[9 + i];
         for (int j = 0; j < 3; ++j) {
             const T u = v[j] / norm;
-            const T slope = u * pow_abs(u, power);  // sign(u) |u|^(2p-1)
+            const T slope = signed_power(u, power);  // sign(u) |u|^(2p-1)
             for (int k = 0; k < 3; ++k)
                 if (c[k] != 0) equations[3 * k + j] = equations[3 * k + j] - field.integer(c[k]) * mu * slope;
         }

@@ -29,7 +29,7 @@ struct LocalOptimum {
 };
 
 // The KKT system at x = (B row-major, mu_1 .. mu_m): for each entry (k, j), the cofactor of
-// b_kj minus sum_i mu_i c_ik u_ij |u_ij|^(2p-2), u_i = c_i B / n_i, n_i = ||c_i B||_(2p); then
+// b_kj minus sum_i mu_i c_ik sign(u_ij) |u_ij|^(2p-1), u_i = c_i B / n_i, n_i = ||c_i B||_(2p); then
 // n_i - 2. One template over the scalar (an interval, or a Jet for the Jacobian).
 template <class T, class P>
 std::vector<T> kkt_equations(const std::vector<T>& x, const std::vector<Coefficients>& active, const P& p);
