@@ -1,5 +1,6 @@
-// superpack best --p P [--digits D] [--json] [--certificate FILE] [--seed S] [--starts N]: the
-// densest lattice packing of the superball at p that superpack certifies (problems/best.hpp).
+// superpack best --p P [--digits D] [--json] [--certificate FILE] [--seed S] [--starts N]
+// superpack best --scan a:b:h --csv [--digits D] [--seed S] [--starts N]
+// The densest lattice packing of the superball at p that superpack certifies (problems/best.hpp).
 #include <chrono>
 #include <memory>
 
@@ -16,15 +17,17 @@ namespace superpack::cli {
 namespace {
 
 struct BestCommandOptions {
-    std::string p, digits, certificate;
+    std::string p, digits, certificate, scan;
     unsigned seed = 1;
     int starts = 16;
-    bool json = false;
+    bool json = false, csv = false;
 };
 
 // Measured: the search dominates; 100 digits adds under a second of certification.
 constexpr long max_digits = 1000;
 constexpr int max_starts = 1000;
+// A scan row takes about 1 to 5 s (the search): 200 rows are at most a quarter of an hour.
+constexpr std::size_t max_scan_values = 200;
 
 Json triples_json(const std::vector<Coefficients>& triples) {
     Json list = Json::array();
@@ -160,11 +163,74 @@ void print_table(const BestLattice<I>& best, int digits) {
               << best.rejected << " rejected\n";
 }
 
+// One CSV row per p: the best lattice, whether locally optimal, and every family (phi, and
+// whether it is a certified packing: yes, no (overlapping or no lattice), undecided, or outside
+// its domain).
+int run_scan(const BestCommandOptions& options) {
+    const std::vector<Rational> values = parse_scan(options.scan, max_scan_values);
+    for (const Rational& p : values) require_best_domain(p);
+    return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
+        using I = typename std::decay_t<decltype(field)>::Interval;
+        const int print_digits = table_digits(digits, !options.digits.empty());
+        auto pair = [print_digits](const I& x) {
+            const DecimalEnclosure text = to_decimal(x, print_digits);
+            return text.lo + "," + text.hi;
+        };
+        std::cout << "p,best,phi_lo,phi_hi,locally_optimal";
+        for (Family family : all_families())
+            std::cout << "," << to_string(family) << "_lo," << to_string(family) << "_hi," << to_string(family) << "_packing";
+        std::cout << "\n";
+        BestOptions best_options;
+        best_options.search.seed = options.seed;
+        best_options.search.random_starts = options.starts;
+        int code = exit_ok;
+        std::size_t done = 0;
+        for (const Rational& p : values) {
+            std::cerr << "best scan: p = " << decimal_or_fraction_text(p) << " (" << ++done << "/" << values.size() << ")\n";
+            const BestLattice<I> best = find_best_lattice(p, field, best_options);
+            std::cout << decimal_or_fraction_text(p) << ",";
+            if (best.status == Outcome::proved)
+                std::cout << "\"" << best_name(best) << "\"," << pair(best_phi(best)) << ","
+                          << (best.local->verdict == Outcome::proved ? "yes" : "not certified");
+            else
+                std::cout << ",,,";
+            for (Family family : all_families()) {
+                const FamilyEntry<I>* entry = nullptr;
+                for (const FamilyEntry<I>& e : best.families)
+                    if (e.lattice.family == family) entry = &e;
+                if (!entry) {
+                    std::cout << ",,,outside";
+                    continue;
+                }
+                const bool packing = entry->check.verdict == Outcome::proved;
+                const bool no = entry->check.verdict == Outcome::refuted || entry->lattice.status == Outcome::refuted;
+                std::cout << "," << (entry->lattice.phi ? pair(*entry->lattice.phi) : std::string(",")) << ","
+                          << (packing ? "yes" : no ? "no" : "undecided");
+            }
+            std::cout << "\n";
+            if (best.status != Outcome::proved) code = exit_undecided;
+        }
+        if (code != exit_ok) throw Failure(code, "best scan: undecided: some p has no certified lattice (empty CSV fields)");
+        return code;
+    });
+}
+
 int run(const BestCommandOptions& options) {
-    const Rational p = parse_p(options.p);
-    require_best_domain(p);
+    if (!options.scan.empty()) {
+        if (!options.p.empty()) throw Failure(exit_usage, "best: give one of --p and --scan, not both");
+        if (!options.csv) throw Failure(exit_usage, "best: --scan needs --csv");
+        if (options.json || !options.certificate.empty())
+            throw Failure(exit_usage, "best: --scan prints CSV, without --json or --certificate");
+    } else if (options.csv) {
+        throw Failure(exit_usage, "best: --csv needs --scan");
+    } else if (options.p.empty()) {
+        throw Failure(exit_usage, "best: give --p or --scan");
+    }
     if (options.starts < 0 || options.starts > max_starts)
         throw InputError("--starts: 0 to " + std::to_string(max_starts) + " random starts, got " + std::to_string(options.starts));
+    if (!options.scan.empty()) return run_scan(options);
+    const Rational p = parse_p(options.p);
+    require_best_domain(p);
     if (!options.certificate.empty()) {
         require_writable_target(options.certificate);
         require_rounding_self_test();
@@ -206,7 +272,10 @@ int run(const BestCommandOptions& options) {
 void add_best(CLI::App& app) {
     auto options = std::make_shared<BestCommandOptions>();
     CLI::App* command = app.add_subcommand("best", "The densest lattice packing superpack certifies at p: families and a search");
-    command->add_option("--p", options->p, "deformation parameter 1/2 <= p <= 10^6: a decimal or a fraction")->required();
+    command->add_option("--p", options->p, "deformation parameter 1/2 <= p <= 10^6: a decimal or a fraction");
+    command->add_option("--scan", options->scan,
+                        "a:b:h: one CSV row per p = a, a + h, ... <= b (at most " + std::to_string(max_scan_values) + "); needs --csv");
+    command->add_flag("--csv", options->csv, "print the scan as CSV (scripts/plot-best.sh draws it)");
     command->add_option("--digits", options->digits,
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
     command->add_flag("--json", options->json, "print one JSON document on stdout");

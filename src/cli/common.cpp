@@ -28,6 +28,23 @@ Rational parse_p(const std::string& text, const std::string& option) {
     return p;
 }
 
+std::vector<Rational> parse_scan(const std::string& text, std::size_t max_values) {
+    const auto first = text.find(':'), second = text.find(':', first == std::string::npos ? 0 : first + 1);
+    if (first == std::string::npos || second == std::string::npos)
+        throw InputError("--scan wants a:b:h, got '" + text + "'");
+    const Rational a = parse_p(text.substr(0, first), "--scan a"), b = parse_p(text.substr(first + 1, second - first - 1), "--scan b"),
+                   h = parse_number(text.substr(second + 1), "--scan h");
+    if (h <= 0) throw InputError("--scan a:b:h: the step h must be positive, got '" + text.substr(second + 1) + "'");
+    if (b < a) throw InputError("--scan a:b:h needs a <= b");
+    Rational count = (b - a) / h;
+    count.canonicalize();
+    if (count >= max_values)
+        throw InputError("--scan: at most " + std::to_string(max_values) + " values of p, (b - a)/h + 1 is more");
+    std::vector<Rational> values;
+    for (Rational p = a; p <= b; p += h) values.push_back(p);
+    return values;
+}
+
 long parse_digits(const std::string& text, long maximum) {
     bool digits_only = !text.empty() && text.size() <= 7;
     for (char c : text) digits_only = digits_only && c >= '0' && c <= '9';

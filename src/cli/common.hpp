@@ -39,6 +39,8 @@ constexpr std::size_t max_error_characters = 300;
 Rational parse_number(const std::string& text, const std::string& option);
 // p for `option`: exact, within the supported range.
 Rational parse_p(const std::string& text, const std::string& option = "--p");
+// --scan a:b:h: the exact values a, a + h, ... <= b, at most `max_values` of them.
+std::vector<Rational> parse_scan(const std::string& text, std::size_t max_values);
 // --digits: a whole number from 1 to `maximum` (each command states its own).
 long parse_digits(const std::string& text, long maximum);
 

@@ -117,26 +117,8 @@ void print_table(const SuperdiskReport<I>& report, const std::string& p, const c
     std::cout << "  note: " << report.message << "\n";
 }
 
-// a:b:h, each exact.
-std::vector<Rational> parse_scan(const std::string& text) {
-    const auto first = text.find(':'), second = text.find(':', first == std::string::npos ? 0 : first + 1);
-    if (first == std::string::npos || second == std::string::npos)
-        throw InputError("--scan wants a:b:h, got '" + text + "'");
-    const Rational a = parse_p(text.substr(0, first), "--scan a"), b = parse_p(text.substr(first + 1, second - first - 1), "--scan b"),
-                   h = parse_number(text.substr(second + 1), "--scan h");
-    if (h <= 0) throw InputError("--scan a:b:h: the step h must be positive, got '" + text.substr(second + 1) + "'");
-    if (b < a) throw InputError("--scan a:b:h needs a <= b");
-    Rational count = (b - a) / h;
-    count.canonicalize();
-    if (count >= max_scan_values)
-        throw InputError("--scan: at most " + std::to_string(max_scan_values) + " values of p, (b - a)/h + 1 is more");
-    std::vector<Rational> values;
-    for (Rational p = a; p <= b; p += h) values.push_back(p);
-    return values;
-}
-
 int run_scan(const SuperdiskCliOptions& options) {
-    const std::vector<Rational> values = parse_scan(options.scan);
+    const std::vector<Rational> values = parse_scan(options.scan, max_scan_values);
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
         const int print_digits = table_digits(digits, !options.digits.empty());

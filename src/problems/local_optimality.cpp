@@ -78,8 +78,30 @@ bool certainly_positive_definite(const std::vector<std::vector<I>>& m) {
 
 }  // namespace
 
+// Every step but the domain checks of certify_local_optimum.
+template <class I>
+LocalOptimum<I> certify_smooth_local_optimum(const DoubleBasis& guess, const std::vector<Coefficients>& contacts, const I& p);
+
 template <class I>
 LocalOptimum<I> certify_local_optimum(const DoubleBasis& guess, const std::vector<Coefficients>& contacts, const I& p) {
+    LocalOptimum<I> result;
+    const auto field = field_of(p);
+    // The second-order conditions need twice differentiable constraints: the norm is piecewise
+    // linear at p = 1/2 (an octahedron: Betke and Henk's polyhedral setting, NOTES 11.5.1).
+    if (!certainly_less(field.rational(Rational(1, 2)), p)) {
+        result.reason = "not decided at p = 1/2: the norm is not differentiable there (a polytope)";
+        return result;
+    }
+    try {
+        return certify_smooth_local_optimum(guess, contacts, p);
+    } catch (const std::domain_error& error) {
+        result.reason = std::string("an enclosure was too wide for a power's contract (") + error.what() + ")";
+        return result;
+    }
+}
+
+template <class I>
+LocalOptimum<I> certify_smooth_local_optimum(const DoubleBasis& guess, const std::vector<Coefficients>& contacts, const I& p) {
     LocalOptimum<I> result;
     const auto field = field_of(p);
     // The system minimises det B, so the basis must have det > 0: otherwise b3 -> -b3, which
