@@ -2,6 +2,9 @@
 // tests/data/d14.json) in both backends, Minkowski's lattice at p = 1/2 (= O1 there), the end
 // of the branch at p*_o, the packing check with its 14 contacts, and the comparison with the
 // other families on (1/2, p*_o).
+#include <cstdio>
+#include <filesystem>
+
 #include "superpack/problems/family_lattice_check.hpp"
 #include "support.hpp"
 
@@ -78,7 +81,7 @@ TEMPLATE_TEST_CASE("D14 at p = 1/2 is Minkowski's lattice: phi = 18/19, the O1 l
     CHECK(check.contacts() == 14);
 }
 
-TEST_CASE("D14 is a packing with exactly 14 contacts where O0 and O1 overlap, and report ranks it densest") {
+TEST_CASE("D14 is a packing with exactly 14 contacts where O0 and O1 overlap") {
     const DoubleField field;
     for (const char* p_text : {"0.55", "0.7", "0.79"}) {
         INFO("p = " << p_text);
@@ -95,7 +98,7 @@ TEST_CASE("D14 is a packing with exactly 14 contacts where O0 and O1 overlap, an
     }
 }
 
-TEST_CASE("D14 ends at p*_o: no lattice beyond it, undecided next to it, outside the domain refused") {
+TEST_CASE("D14 ends at p*_o: no lattice beyond it, outside the domain refused") {
     const DoubleField field;
     const auto beyond = enclose_family(Family::D14, Rational(17, 20), field);
     CHECK(beyond.status == Outcome::refuted);
@@ -105,4 +108,22 @@ TEST_CASE("D14 ends at p*_o: no lattice beyond it, undecided next to it, outside
     CHECK_THROWS_AS(enclose_family(Family::D14, Rational(101, 100), field), InputError);
     CHECK(parse_family("D14") == Family::D14);
     CHECK(claimed_contacts(Family::D14) == 14);
+}
+
+TEST_CASE("report: D14 is the densest certified packing at p = 0.6, and no lattice at p = 0.8 (exit 0)") {
+    const std::string file = std::string(std::filesystem::temp_directory_path() / "superpack-test-d14-report.json");
+    const std::string command = std::string(SUPERPACK_BINARY) + " report --p-values 0.6,0.8 --json --output " + file + " 2>/dev/null";
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::string out;
+    char buffer[4096];
+    while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+    CHECK(WEXITSTATUS(pclose(pipe)) == 0);
+    std::filesystem::remove(file);
+    const nlohmann::json document = nlohmann::json::parse(out);
+    CHECK(document["rows"][0]["densest"] == "D14");
+    CHECK(document["rows"][0]["families"]["D14"]["packing"]["verdict"] == "admissible");
+    CHECK(document["rows"][0]["families"]["D14"]["packing"]["contacts"] == 14);
+    CHECK(document["rows"][1]["densest"] == "O0");
+    CHECK(document["rows"][1]["families"]["D14"]["status"] == "no_lattice");
 }
