@@ -128,7 +128,8 @@ FamilyParameters replay_o1(Context& context, const Json& proof, const std::strin
 // D14: the pieces partition [0,1] x [-1,1]^2, which holds every root with x >= 0 (the first
 // equation bounds |x|, |y|, |z| by 1); the roots of `unique` pieces are distinct, and exactly one
 // of them has x, y, z certainly > 0 and y certainly < z, every other one certainly fails one of
-// these. A root with x < 0 fails x > 0, so it is the one root of the system on the branch.
+// these (a coordinate certainly < 0, or z certainly < y). A root with x < 0 fails x > 0, so it is
+// the one root of the system on the branch.
 FamilyParameters replay_d14(Context& context, const Json& proof, const std::string& path, const Real& p) {
     const System system = d14_system(p);
     if (context.string_at(proof, "kind", path) != "all") context.malformed(path + ".kind", "expected \"all\"");
@@ -153,7 +154,7 @@ FamilyParameters replay_d14(Context& context, const Json& proof, const std::stri
     for (std::size_t k = 0; k < roots.size(); ++k) {
         const Box& r = roots[k];
         const bool on = positive(r[0]) && positive(r[1]) && positive(r[2]) && less(r[1], r[2]);
-        const bool off = !positive(r[0]) || negative(r[1]) || negative(r[2]) || less(r[2], r[1]);
+        const bool off = negative(r[0]) || negative(r[1]) || negative(r[2]) || less(r[2], r[1]);
         context.require(on || off, partition_path, "a root is not certainly on or off the branch x, y, z > 0, y < z");
         if (on) on_branch.push_back(k);
     }

@@ -60,7 +60,7 @@ Json audit_certificate(const AuditResult& result) {
     // O1 and D14 are audited by continuation of their root from p = 1/2 (audit.cpp).
     const bool continued = family == Family::O1 || family == Family::D14;
     if (continued && result.range.lo != Rational(1, 2))
-        throw InputError(std::string("an ") + to_string(family) +
+        throw InputError(std::string(family == Family::O1 ? "an " : "a ") + to_string(family) +
                          " audit certificate starts at p = 1/2 (the branch is followed from Minkowski's lattice)");
     const DoubleField field;
     Json pieces = Json::array(), proofs = Json::array();

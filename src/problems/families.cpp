@@ -203,9 +203,9 @@ FamilyLattice<I> enclose_o1(const I& p) {
 }
 
 // D14: every root of the system with x >= 0 in the box d14_search_box (it holds [0,1] x [-1,1]^2,
-// and the first equation bounds |x|, |y|, |z| by 1), then the branch: the one root with x, y, z > 0 and y < z, certainly
-// (NOTES.md, "D14"). Roots with x < 0 cannot be on the branch, so the half box suffices; the
-// mirror root (x, z, y) (the same lattice reflected) has y > z.
+// and the first equation bounds |x|, |y|, |z| by 1), then the branch: the one root with x, y,
+// z certainly > 0 and y certainly < z (NOTES.md 4.1). Roots with x < 0 cannot be on the branch,
+// so the half box suffices; the mirror root (x, z, y) (the same lattice reflected) has y > z.
 template <class I>
 FamilyLattice<I> enclose_d14(const I& p) {
     FamilyLattice<I> lattice{Family::D14};
@@ -220,8 +220,10 @@ FamilyLattice<I> enclose_d14(const I& p) {
         const I& x = leaf.root[0];
         const I& y = leaf.root[1];
         const I& z = leaf.root[2];
-        const bool off = !certainly_positive(x) || certainly_less(y, field.integer(0)) ||
-                         certainly_less(z, field.integer(0)) || certainly_less(z, y);
+        // Off the branch only when a condition certainly fails: a box of x, y or z that merely
+        // touches 0 leaves the root undecided.
+        const I zero = field.integer(0);
+        const bool off = certainly_less(x, zero) || certainly_less(y, zero) || certainly_less(z, zero) || certainly_less(z, y);
         const bool on = certainly_positive(x) && certainly_positive(y) && certainly_positive(z) && certainly_less(y, z);
         lattice.branches.push_back({{{"x", x}, {"y", y}, {"z", z}}, leaf});
         if (on) on_branch.push_back(lattice.branches.size() - 1);
