@@ -61,7 +61,7 @@ int main() {
     }
     const double measured = seconds_since(start);
     std::cout << "pieces " << pieces << ", undecided " << undecided << " (unverified scans: " << (sink > 0) << ")\n";
-    std::cout << "audit of C0, C1, O0, O1: " << measured << " s (" << measured / reference
+    std::cout << "audit of C0, C1, O0, O1, D14: " << measured << " s (" << measured / reference
               << "x of the unverified double scan of 300 O1 lattices, " << reference << " s) goal 60 s "
               << (measured <= 60 ? "PASS" : "FAIL") << "\n";
     return 0;

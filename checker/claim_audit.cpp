@@ -14,6 +14,8 @@
 //               p0 is unique. The root is continuous on each piece (Krawczyk proves the
 //               Jacobian nonsingular), so the boxes follow one branch. A piece without a box
 //               breaks the chain: no later O1 piece can be decided.
+//   D14:        the same continuation for the equations of Dostert and Vallentin (2020) in
+//               (x, y, z), from the exact root (1/3, 1/6, 1/2) at p = 1/2.
 // then the verdict with the checker's own enumeration (family_verdict.hpp).
 //
 // Keys read: claim.data {family, lattice ("published"), range {lo, hi}, pieces [{p {lo, hi},
@@ -39,39 +41,59 @@ Piece read_piece_range(Context& context, const Json& node, const std::string& pa
     return piece;
 }
 
-// Minkowski's lattice: (q, s) = (1/6, 2/3) solves Eq. (12) at p = 1/2 (l = 1/3), exactly.
+// Minkowski's lattice: (q, s) = (1/6, 2/3) solves Eq. (12) at p = 1/2 (l = 1/3), exactly; as
+// D14 it is (x, y, z) = (1/3, 1/6, 1/2), which solves the D14 equations at p = 1/2 exactly.
 bool minkowski_solves_eq12() {
     const mpq_class q(1, 6), s(2, 3), l(1, 3);
     return 2 * abs(q) + abs(s) == 1 && abs(l + q) + abs(s - l) + abs(l - q) == 1;
 }
 
-// The O1 continuation state: the box of the previous piece, when the chain is unbroken.
+bool minkowski_solves_d14() {
+    const mpq_class x(1, 3), y(1, 6), z(1, 2);
+    return abs(x) + abs(y) + abs(z) == 1 && abs(x - y) + abs(z - x) + abs(y + z) == 1 && 3 * abs(y + z - x) == 1;
+}
+
+// The families audited by continuation, their systems and their start at p = 1/2.
+bool continued(const std::string& family) { return family == "O1" || family == "D14"; }
+
+System continuation_system(const std::string& family, const Real& p) {
+    return family == "O1" ? octahedral_system(p) : d14_system(p);
+}
+
+std::vector<mpq_class> continuation_start(const std::string& family) {
+    if (family == "O1") return {mpq_class(1, 6), mpq_class(2, 3)};
+    return {mpq_class(1, 3), mpq_class(1, 6), mpq_class(1, 2)};
+}
+
+// The O1 or D14 continuation state: the box of the previous piece, when the chain is unbroken.
 struct Chain {
     std::optional<Box> previous;
 };
 
-// The symbols of the O1 basis from the root box of Eq. (12) at p.
-NamedReals o1_symbols(const Box& root, const Real& p) {
-    return NamedReals{{"l", OctahedralEquations{p}.l()}, {"q", root[0]}, {"s", root[1]}};
+// The symbols of the basis from the root box at p: O1 (Eq. (12)) or D14.
+NamedReals continued_symbols(const std::string& family, const Box& root, const Real& p) {
+    if (family == "O1") return NamedReals{{"l", OctahedralEquations{p}.l()}, {"q", root[0]}, {"s", root[1]}};
+    return NamedReals{{"x", root[0]}, {"y", root[1]}, {"z", root[2]}};
 }
 
-// The unique root of Eq. (12) in `box` at the single point p0 (the box holds the branch for
-// every p of its piece, p0 among them), tightened by Krawczyk.
-Box o1_root_at(Context& context, const Box& box, const Real& p0, const std::string& path) {
-    const KrawczykReplay replay = replay_krawczyk(octahedral_system(p0), box, 80);
+// The unique root in `box` at the single point p0 (the box holds the branch for every p of its
+// piece, p0 among them), tightened by Krawczyk.
+Box root_at(Context& context, const std::string& family, const Box& box, const Real& p0, const std::string& path) {
+    const KrawczykReplay replay = replay_krawczyk(continuation_system(family, p0), box, 80);
     context.require(replay.status == ReplayStatus::unique, path, "no unique root in the box at the point p = " + text(p0));
     return replay.root;
 }
 
-struct O1Piece {
+struct ContinuedPiece {
     Box box;   // the stored box: exactly one root for every p of the piece
     Box root;  // the checker's tightened box of that root over the piece
 };
 
-// Replays the O1 box of one piece; returns it, or nothing when the chain to p = 1/2 is broken
-// (the piece then cannot be decided).
-std::optional<O1Piece> replay_o1_piece(Context& context, const Json& node, const std::string& path, const Piece& piece,
-                                          const Real& p, Chain& chain, bool first) {
+// Replays the O1 or D14 box of one piece; returns it, or nothing when the chain to p = 1/2 is
+// broken (the piece then cannot be decided).
+std::optional<ContinuedPiece> replay_continued_piece(Context& context, const std::string& family, const Json& node,
+                                                     const std::string& path, const Piece& piece, const Real& p, Chain& chain,
+                                                     bool first) {
     const mpfr_prec_t precision = p.precision();
     if (node.is_null()) {
         chain.previous.reset();
@@ -81,25 +103,27 @@ std::optional<O1Piece> replay_o1_piece(Context& context, const Json& node, const
     if (context.string_at(node, "kind", path) != "krawczyk" || context.string_at(node, "status", path) != "unique")
         context.malformed(path, "expected a krawczyk leaf with status unique");
     const Box box = context.box(context.member(node, "box", path), path + ".box");
-    if (box.size() != 2) context.malformed(path + ".box", "expected a (q, s) box");
-    const KrawczykReplay replay = replay_krawczyk(octahedral_system(p), box, 80);
+    const std::vector<mpq_class> start = continuation_start(family);
+    if (box.size() != start.size()) context.malformed(path + ".box", family == "O1" ? "expected a (q, s) box" : "expected an (x, y, z) box");
+    const KrawczykReplay replay = replay_krawczyk(continuation_system(family, p), box, 80);
     context.require(replay.status == ReplayStatus::unique, path,
                     "the checker could not prove exactly one root in the box for every p of the piece (" + replay.reason + ")");
     bool linked = false;
     if (first) {
         const mpq_class half(1, 2);
-        linked = piece.lo == half && minkowski_solves_eq12() && subset(rational(mpq_class(1, 6), precision), box[0]) &&
-                 subset(rational(mpq_class(2, 3), precision), box[1]);
+        linked = piece.lo == half && (family == "O1" ? minkowski_solves_eq12() : minkowski_solves_d14());
+        for (std::size_t k = 0; k < start.size(); ++k) linked = linked && subset(rational(start[k], precision), box[k]);
     } else if (chain.previous) {
-        const Box at_end = o1_root_at(context, box, rational(piece.lo, precision), path);
-        linked = subset(at_end[0], (*chain.previous)[0]) && subset(at_end[1], (*chain.previous)[1]);
+        const Box at_end = root_at(context, family, box, rational(piece.lo, precision), path);
+        linked = true;
+        for (std::size_t k = 0; k < at_end.size(); ++k) linked = linked && subset(at_end[k], (*chain.previous)[k]);
     }
     chain.previous = box;
     if (!linked) {
         chain.previous.reset();
         return std::nullopt;
     }
-    return O1Piece{box, replay.root};
+    return ContinuedPiece{box, replay.root};
 }
 
 // A run of consecutive pieces with the same verdict words, for the sentence.
@@ -165,18 +189,20 @@ std::string check_audit(const Json& claim, Context& context) {
         const Json& lattice = context.member(proofs[k], "lattice", proof_path);
         if (!decided) {
             merge(merged, piece, "undecided");
-            // Nothing is proved here: no lattice proof (O1 keeps its box for the chain, below).
+            // Nothing is proved here: no lattice proof (O1, D14 keep their box for the chain, below).
             if (!lattice.is_null()) context.malformed(proof_path + ".lattice", "an undecided piece proves nothing: expected null");
-            if (family != "O1" && !parameters.is_null())
+            if (!continued(family) && !parameters.is_null())
                 context.malformed(parameters_path, "an undecided piece proves nothing: expected null");
         }
         NamedReals symbols;
-        if (family == "O1") {
-            const auto replayed = replay_o1_piece(context, parameters, parameters_path, piece, p, chain, k == 0);
+        if (continued(family)) {
+            const auto replayed = replay_continued_piece(context, family, parameters, parameters_path, piece, p, chain, k == 0);
             if (!decided) continue;
             context.require(replayed.has_value(), parameters_path,
-                            "the branch through (1/6, 2/3) at p = 1/2 is not followed onto this piece");
-            symbols = o1_symbols(at ? o1_root_at(context, replayed->box, p_claimed, parameters_path) : replayed->root, p_claimed);
+                            std::string("the branch through ") + (family == "O1" ? "(1/6, 2/3)" : "(1/3, 1/6, 1/2)") +
+                                " at p = 1/2 is not followed onto this piece");
+            symbols = continued_symbols(
+                family, at ? root_at(context, family, replayed->box, p_claimed, parameters_path) : replayed->root, p_claimed);
         } else {
             if (!decided) continue;
             context.require(!parameters.is_null(), parameters_path, "a decided piece needs its parameter proof");
@@ -201,14 +227,17 @@ std::string check_audit(const Json& claim, Context& context) {
         family == "O1" ? std::string("the O1 lattice of ") + paper_citation +
                              " (Sec. IV.B: basis Eq. (15), (q, s) on the root branch of Eq. (16) through Minkowski's (1/6, 2/3) "
                              "at p = 1/2)"
-                       : lattice_words(family);
+        : family == "D14" ? std::string("the D14 lattice of ") + dostert_vallentin_citation +
+                                " (Theorem 4.2, their exponent 2p: basis 2(-x, y, z), 2(z, -x, y), 2(y, z, -x), (x, y, z) on the "
+                                "root branch of their three equations through Minkowski's (1/3, 1/6, 1/2) at p = 1/2)"
+                          : lattice_words(family);
     std::string text = "For every p in each piece [lo, hi] of claim.data.pieces (exact rational ends; the pieces cover [" +
                        rational_words(range.lo) + ", " + rational_words(range.hi) + "] without gaps), " + lattice_text +
                        " has the verdict stated for the piece: a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1 "
                        "with the stated contacts, or not a packing (the witness vector has 2p-norm < 2). A piece marked "
                        "overlapping_at_point is not a packing at the one point p = at of the piece (witness) and proves "
                        "nothing about its other p. Pieces marked undecided prove nothing.";
-    if (family == "O1")
+    if (continued(family))
         text += " The branch is followed by continuation: a Krawczyk box per piece, each holding the root of the next "
                 "piece at their shared end; a piece without a box breaks the chain.";
     text += " The verdicts, merged:";

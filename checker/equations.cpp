@@ -50,6 +50,22 @@ std::array<std::array<Real, 2>, 2> OctahedralEquations::jacobian(const std::arra
              {e * (pow_signed(q + ell, e1) - pow_signed(ell - q, e1)), e * pow_signed(s - ell, e1)}}};
 }
 
+std::array<Real, 3> D14Equations::value(const std::array<Real, 3>& v) const {
+    const Real e = two_p(p), one = one_like(p);
+    const Real &x = v[0], &y = v[1], &z = v[2];
+    return {pow_abs(x, e) + pow_abs(y, e) + pow_abs(z, e) - one,
+            pow_abs(x - y, e) + pow_abs(z - x, e) + pow_abs(y + z, e) - one, 3 * pow_abs(y + z - x, e) - one};
+}
+
+// d/du |u|^(2p) = 2p sign(u) |u|^(2p-1), by the chain rule through each linear argument.
+std::array<std::array<Real, 3>, 3> D14Equations::jacobian(const std::array<Real, 3>& v) const {
+    const Real e = two_p(p), e1 = two_p(p) - one_like(p);
+    const Real &x = v[0], &y = v[1], &z = v[2];
+    const Real a = e * pow_signed(x - y, e1), b = e * pow_signed(z - x, e1), c = e * pow_signed(y + z, e1);
+    const Real s = 3 * (e * pow_signed(y + z - x, e1));
+    return {{{e * pow_signed(x, e1), e * pow_signed(y, e1), e * pow_signed(z, e1)}, {a - b, c - a, b + c}, {-s, s, s}}};
+}
+
 Matrix3 c0_basis(const Real& s, const Real& t) {
     const Real zero(s.precision()), one = one_like(s);
     const Real side = 2 * t;
@@ -76,6 +92,11 @@ Matrix3 o0_basis(const Real& c) {
 Matrix3 o1_basis(const Real& q, const Real& s, const Real& l) {
     const Real side = 2 * l;
     return {{{side, side, -side}, {-(2 * q), 2 * s, -(2 * q)}, {2 * q, -(2 * q), -(2 * s)}}};
+}
+
+Matrix3 d14_basis(const Real& x, const Real& y, const Real& z) {
+    const Real a = 2 * x, b = 2 * y, c = 2 * z;
+    return {{{-a, b, c}, {c, -a, b}, {b, c, -a}}};
 }
 
 Real determinant(const Matrix3& m) {

@@ -1,5 +1,5 @@
-// The formulas the checker needs, written again from the paper (Jiao, Stillinger, Torquato
-// 2009) in the checker's own arithmetic: the contact equations with their derivatives
+// The formulas the checker needs, written again from the papers (Jiao, Stillinger, Torquato
+// 2009; Dostert, Vallentin 2020 for D14) in the checker's own arithmetic: the contact equations with their derivatives
 // (derived by hand, no automatic differentiation), the lattice bases, the 3x3 determinant
 // and the superball volume. Nothing here is shared with the producer.
 #pragma once
@@ -31,12 +31,23 @@ struct OctahedralEquations {
     Real l() const;
 };
 
-// Bases (rows) of the families: C0 Eq. 1, C1 Eq. 8, O0 Eq. 5, O1 Eq. 11.
+// D14 (Dostert and Vallentin, Adv. Geom. 20 (2020), Theorem 4.2, their exponent 2p), unknowns
+// (x, y, z): F0 = |x|^(2p) + |y|^(2p) + |z|^(2p) - 1, F1 = |x-y|^(2p) + |z-x|^(2p) + |y+z|^(2p) - 1,
+// F2 = 3|y+z-x|^(2p) - 1.
+struct D14Equations {
+    Real p;
+    std::array<Real, 3> value(const std::array<Real, 3>& v) const;
+    std::array<std::array<Real, 3>, 3> jacobian(const std::array<Real, 3>& v) const;
+};
+
+// Bases (rows) of the families: C0 Eq. 1, C1 Eq. 8, O0 Eq. 5, O1 Eq. 11; D14 2(-x, y, z),
+// 2(z, -x, y), 2(y, z, -x).
 Matrix3 c0_basis(const Real& s, const Real& t);
 Matrix3 c1_basis(const Real& s, const Real& t);
 Real o0_height(const Real& p);  // c = (1 - 2^(1-2p))^(1/(2p))
 Matrix3 o0_basis(const Real& c);
 Matrix3 o1_basis(const Real& q, const Real& s, const Real& l);
+Matrix3 d14_basis(const Real& x, const Real& y, const Real& z);
 
 Real determinant(const Matrix3& m);
 // ||v||_(2p) = 2 (sum |v_i / 2|^(2p))^(1/(2p)): the halves of the candidates' coordinates are

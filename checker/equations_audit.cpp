@@ -79,6 +79,19 @@ FamilyForms family_forms(const std::string& family) {
                  {"Eq. 12, second line: |l+q|^(2p) + |s-l|^(2p) + |l-q|^(2p) = 1",
                   {form({0, 1, 1, 0}), form({0, -1, 0, 1}), form({0, 1, -1, 0})}}}};
     }
+    if (family == "D14") {
+        // symbols x, y, z (Dostert and Vallentin 2020, Theorem 4.2): rows 2(-x, y, z), 2(z, -x, y),
+        // 2(y, z, -x); b1 + b2 = 2(z-x, y-x, y+z) and its cyclic images, b1 + b2 + b3 = 2(s, s, s).
+        return {{"x", "y", "z"},
+                {{{form({0, -2, 0, 0}), form({0, 0, 2, 0}), form({0, 0, 0, 2})},
+                  {form({0, 0, 0, 2}), form({0, -2, 0, 0}), form({0, 0, 2, 0})},
+                  {form({0, 0, 2, 0}), form({0, 0, 0, 2}), form({0, -2, 0, 0})}}},
+                {{"1^(2p) = 1", {form({1, 0, 0, 0})}},
+                 {"D14, first equation: |x|^(2p) + |y|^(2p) + |z|^(2p) = 1", {form({0, 1, 0, 0}), form({0, 0, 1, 0}), form({0, 0, 0, 1})}},
+                 {"D14, second equation: |x-y|^(2p) + |z-x|^(2p) + |y+z|^(2p) = 1",
+                  {form({0, 1, -1, 0}), form({0, -1, 0, 1}), form({0, 0, 1, 1})}},
+                 {"D14, third equation: 3|-x+y+z|^(2p) = 1", {form({0, -1, 1, 1}), form({0, -1, 1, 1}), form({0, -1, 1, 1})}}}};
+    }
     throw std::invalid_argument("unknown family \"" + family + "\"");
 }
 

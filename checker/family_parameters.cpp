@@ -18,6 +18,8 @@ void require_family_domain(Context& context, const std::string& family, const mp
         context.require(lo > half && hi <= 1, path, "outside the domain 1/2 < p <= 1 of O0");
     else if (family == "O1")
         context.require(lo >= half, path, "outside the domain p >= 1/2 of O1");
+    else if (family == "D14")
+        context.require(lo >= half && hi <= 1, path, "outside the domain 1/2 <= p <= 1 of D14");
     else
         context.malformed("claim.data.family", "unknown family \"" + family + "\"");
 }
@@ -123,7 +125,73 @@ FamilyParameters replay_o1(Context& context, const Json& proof, const std::strin
     return {{{"l", l}, {"q", q}, {"s", s}}, {{"l", l}, {"q", q}, {"s", s}}, o1_basis(q, s, l)};
 }
 
+// D14: the pieces partition [0,1] x [-1,1]^2, which holds every root with x >= 0 (the first
+// equation bounds |x|, |y|, |z| by 1); the roots of `unique` pieces are distinct, and exactly one
+// of them has x, y, z certainly > 0 and y certainly < z, every other one certainly fails one of
+// these (a coordinate certainly < 0, or z certainly < y). A root with x < 0 fails x > 0, so it is
+// the one root of the system on the branch.
+FamilyParameters replay_d14(Context& context, const Json& proof, const std::string& path, const Real& p) {
+    const System system = d14_system(p);
+    if (context.string_at(proof, "kind", path) != "all") context.malformed(path + ".kind", "expected \"all\"");
+    const Json& cases = context.member(proof, "cases", path);
+    if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
+    context.require(cases.size() == 1, path + ".cases", "expected one case: the partition");
+    const std::string partition_path = path + ".cases[0]";
+    std::vector<Box> roots;
+    const Box covered = check_partition(context, cases[0], partition_path, [&](const Json& leaf, const Box& piece, const std::string& at) {
+        if (piece.size() != 3) context.malformed(at + ".box", "expected an (x, y, z) box");
+        check_root_leaf(context, system, leaf, piece, at, &roots);
+    });
+    context.current_step = partition_path;
+    const mpfr_prec_t precision = p.precision();
+    const Real unit = hull(integer(0, precision), integer(1, precision)), symmetric = hull(integer(-1, precision), integer(1, precision));
+    context.require(covered.size() == 3 && subset(unit, covered[0]) && subset(symmetric, covered[1]) && subset(symmetric, covered[2]),
+                    partition_path + ".box", "the partition does not cover [0,1] x [-1,1] x [-1,1]");
+    for (std::size_t a = 0; a < roots.size(); ++a)
+        for (std::size_t b = a + 1; b < roots.size(); ++b)
+            context.require(disjoint(roots[a], roots[b]), partition_path, "two pieces may hold the same root");
+    std::vector<std::size_t> on_branch;
+    for (std::size_t k = 0; k < roots.size(); ++k) {
+        const Box& r = roots[k];
+        const bool on = positive(r[0]) && positive(r[1]) && positive(r[2]) && less(r[1], r[2]);
+        const bool off = negative(r[0]) || negative(r[1]) || negative(r[2]) || less(r[2], r[1]);
+        context.require(on || off, partition_path, "a root is not certainly on or off the branch x, y, z > 0, y < z");
+        if (on) on_branch.push_back(k);
+    }
+    context.require(on_branch.size() == 1, partition_path,
+                    std::to_string(on_branch.size()) + " roots with x, y, z > 0 and y < z, expected exactly one");
+    // Krawczyk replayed on a wide piece stops early; again from the root box (every iterate holds
+    // the root) until it stops shrinking.
+    Box r = roots[on_branch.front()];
+    for (int round = 0; round < 16; ++round) {
+        const KrawczykReplay tighter = replay_krawczyk(system, r, 80);
+        if (tighter.status != ReplayStatus::unique) break;
+        Width before, after;
+        for (std::size_t k = 0; k < r.size(); ++k) {
+            before = before + width(r[k]);
+            after = after + width(tighter.root[k]);
+        }
+        r = tighter.root;
+        if (!(after < 0.5 * before)) break;
+    }
+    return {{{"x", r[0]}, {"y", r[1]}, {"z", r[2]}}, {{"x", r[0]}, {"y", r[1]}, {"z", r[2]}}, d14_basis(r[0], r[1], r[2])};
+}
+
 }  // namespace
+
+System d14_system(const Real& p) {
+    const D14Equations equations{p};
+    return {[equations](const Box& v) {
+                const auto values = equations.value({v[0], v[1], v[2]});
+                return std::vector<Real>(values.begin(), values.end());
+            },
+            [equations](const Box& v) {
+                const auto j = equations.jacobian({v[0], v[1], v[2]});
+                std::vector<std::vector<Real>> rows;
+                for (const auto& row : j) rows.emplace_back(row.begin(), row.end());
+                return rows;
+            }};
+}
 
 System octahedral_system(const Real& p) {
     const OctahedralEquations equations{p};
@@ -142,6 +210,7 @@ FamilyParameters replay_family_parameters(Context& context, const std::string& f
     if (family == "C0" || family == "C1") return replay_cubic(context, proof, path, family == "C1", p);
     if (family == "O0") return replay_o0(context, proof, path, p);
     if (family == "O1") return replay_o1(context, proof, path, p, p_path);
+    if (family == "D14") return replay_d14(context, proof, path, p);
     context.malformed("claim.data.family", "unknown family \"" + family + "\"");
 }
 

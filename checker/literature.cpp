@@ -7,6 +7,8 @@
 namespace superpack_checker {
 
 const char* const paper_citation = "Jiao, Stillinger and Torquato, Phys. Rev. E 79, 041309 (2009)";
+const char* const dostert_vallentin_citation =
+    "Dostert and Vallentin, New dense superball packings in three dimensions, Adv. Geom. 20 (2020) 473-482";
 
 namespace {
 
@@ -117,6 +119,11 @@ std::string lattice_words(const std::string& family) {
         return "the O1 lattice " + of + "(Sec. IV.B: basis Eq. (15), (q, s) the root of Eq. (16), 2|q|^(2p) + |s|^(2p) = 1 and "
                "|l+q|^(2p) + |s-l|^(2p) + |l-q|^(2p) = 1 with l = 3^(-1/(2p)), with q >= 0 and the larger s: the "
                "Minkowski branch)";
+    if (family == "D14")
+        return std::string("the D14 lattice of ") + dostert_vallentin_citation +
+               " (Theorem 4.2, their exponent 2p: basis 2(-x, y, z), 2(z, -x, y), 2(y, z, -x), (x, y, z) the root of "
+               "|x|^(2p) + |y|^(2p) + |z|^(2p) = 1, |x-y|^(2p) + |z-x|^(2p) + |y+z|^(2p) = 1 and 3|-x+y+z|^(2p) = 1 with "
+               "x, y, z > 0 and y < z)";
     throw std::logic_error("unknown family " + family);
 }
 

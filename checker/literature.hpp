@@ -1,6 +1,7 @@
 // The literature a claim is compared with, in one table in the checker's own source: each
 // printed value with its quantity, the value exactly as printed, the closed form printed beside
-// it and where it is printed; the paper's claim that O1 packs; and where each family is defined.
+// it and where it is printed; the paper's claim that O1 packs; and where each family is defined
+// (D14 in Dostert and Vallentin 2020).
 // A certificate carries none of this as trusted input: a printed value named in a certificate's
 // data must be this table's (claim_sphere_slopes.cpp), and the claim sentences quote the table.
 //
@@ -17,6 +18,9 @@ namespace superpack_checker {
 
 // "Jiao, Stillinger and Torquato, Phys. Rev. E 79, 041309 (2009)", as the sentences cite it.
 extern const char* const paper_citation;
+// The source of the D14 family: M. Dostert and F. Vallentin, New dense superball packings in
+// three dimensions, Adv. Geom. 20 (2020) 473-482 (arXiv:1806.10878), Theorem 4.2.
+extern const char* const dostert_vallentin_citation;
 
 enum class Printed { p_star_c, phi_star_c, p_star_o, phi_star_o, a_plus, a_minus };
 

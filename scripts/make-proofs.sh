@@ -36,6 +36,8 @@ certify density-O1-p0.6 density --family O1 --p 0.6
 certify density-O1-p0.5-minkowski density --family O1 --p 1/2
 certify density-C0-p1.5-30digits density --family C0 --p 3/2 --digits 30
 certify density-O1-p0.5-minkowski-30digits density --family O1 --p 1/2 --digits 30
+# D14 (Dostert and Vallentin 2020) at p = 0.6: a packing with 14 contacts, denser than O1 there.
+certify density-D14-p0.6 density --family D14 --p 0.6
 
 # Lattice checks of exact bases: Minkowski's octahedron lattice at p = 1/2 (a packing, 14
 # contacts), 2Z^3 at p = 3 (a packing, 6 contacts), and an overlapping basis at p = 2 (witness
@@ -75,6 +77,7 @@ certify audit-C0-p1-10 audit --family C0 --output-directory "$scratch"
 certify audit-C1-p1-10 audit --family C1 --output-directory "$scratch"
 certify audit-O0-p0.792481-1 audit --family O0 --output-directory "$scratch"
 certify audit-O1-p0.5-0.792482 audit --family O1 --output-directory "$scratch"
+certify audit-D14-p0.5-0.792482 audit --family D14 --output-directory "$scratch"
 
 # The densest lattices `superpack best` certifies (NOTES 11.8): at p = 0.6, the 14-neighbour
 # lattice, where no lattice of Jiao et al. is a packing; at p = 2, C1; at p = 0.9, a search

@@ -57,11 +57,14 @@ Json family_lattice_check_certificate(const FamilyLattice<typename Field::Interv
 Json audit_certificate(const AuditResult& result) {
     if (result.branch != AuditBranch::published) throw InputError("audit certificates cover the published lattice only");
     const Family family = result.family;
-    if (family == Family::O1 && result.range.lo != Rational(1, 2))
-        throw InputError("an O1 audit certificate starts at p = 1/2 (the branch is followed from Minkowski's lattice)");
+    // O1 and D14 are audited by continuation of their root from p = 1/2 (audit.cpp).
+    const bool continued = family == Family::O1 || family == Family::D14;
+    if (continued && result.range.lo != Rational(1, 2))
+        throw InputError(std::string(family == Family::O1 ? "an " : "a ") + to_string(family) +
+                         " audit certificate starts at p = 1/2 (the branch is followed from Minkowski's lattice)");
     const DoubleField field;
     Json pieces = Json::array(), proofs = Json::array();
-    bool linked = true;  // O1: the continuation from p = 1/2 is unbroken up to this piece
+    bool linked = true;  // O1, D14: the continuation from p = 1/2 is unbroken up to this piece
     for (const AuditPiece& piece : result.pieces) {
         const Json p{{"lo", rational_text(piece.lo)}, {"hi", rational_text(piece.hi)}};
         const DInterval p_interval = hull(field.rational(piece.lo), field.rational(piece.hi));
@@ -69,7 +72,7 @@ Json audit_certificate(const AuditResult& result) {
         const bool certified = piece.lattice && piece.lattice->status == Outcome::proved;
         bool decided = certified && piece.check && piece.check->verdict != Outcome::undecided;
         const bool linked_before = linked;
-        if (family == Family::O1) {
+        if (continued) {
             if (certified)
                 parameters = Json{{"kind", "krawczyk"}, {"status", "unique"}, {"box", box_json(piece.lattice->search.back().piece)}};
             // A piece after a break in the continuation from p = 1/2 cannot be decided.

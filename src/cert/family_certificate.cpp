@@ -45,6 +45,15 @@ Json o1_proof(const FamilyLattice<I>& lattice, const I& p) {
     return Json{{"kind", "all"}, {"cases", cases}};
 }
 
+// D14: the partition of the search box (every root with x >= 0); the checker picks the branch.
+template <class I>
+Json d14_proof(const FamilyLattice<I>& lattice, const I& p) {
+    auto equations = [&](const std::vector<I>& v) { return d14_equations(v, p); };
+    Json cases = Json::array();
+    cases.push_back(partition_json(equations, d14_search_box(p), lattice.search));
+    return Json{{"kind", "all"}, {"cases", cases}};
+}
+
 bool canonical(const Coefficients& c) {
     for (long x : c)
         if (x != 0) return x > 0;
@@ -62,6 +71,7 @@ Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p) {
         case Family::C1: return cubic_proof(lattice, p);
         case Family::O0: return Json{{"kind", "evaluation"}};
         case Family::O1: return o1_proof(lattice, p);
+        case Family::D14: return d14_proof(lattice, p);
     }
     throw std::logic_error("unknown family");
 }

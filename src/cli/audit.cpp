@@ -152,13 +152,13 @@ int run(const AuditOptions& options, bool default_directory) {
 void add_audit(CLI::App& app) {
     auto options = std::make_shared<AuditOptions>();
     CLI::App* command = app.add_subcommand("audit", "Certify a family over its claimed p range, piece by piece");
-    command->add_option("--family", options->family, "C0, C1, O0 or O1 (default: all four)");
+    command->add_option("--family", options->family, "C0, C1, O0, O1 or D14 (default: all five)");
     command->add_option("--p-range", options->p_range, "a:b exact, inside the family's domain (default: the claimed range); needs --family");
     command->add_flag("--second-root", options->second_root, "O1: audit the lattice of the other real root of Eq. (12)");
     command->add_option("--pieces", options->pieces,
-                        "initial pieces per range, 1 to " + std::to_string(max_initial_pieces) + " (default 16; O1: 300)");
+                        "initial pieces per range, 1 to " + std::to_string(max_initial_pieces) + " (default 16; O1: 300; D14: 32)");
     command->add_option("--depth", options->depth,
-                        "bisections of an undecided piece, 0 to " + std::to_string(max_depth) + " (default 12; O1: 3); at most " +
+                        "bisections of an undecided piece, 0 to " + std::to_string(max_depth) + " (default 12; O1: 3; D14: 12); at most " +
                             std::to_string(AuditSettings{}.max_pieces) + " pieces in all");
     CLI::Option* directory = command->add_option("--output-directory", options->output_directory,
                                                  "an existing directory for audit-<family>.json (default out, created if missing)");

@@ -28,6 +28,7 @@ template <class I>
 void print_table(const FamilyLattice<I>& lattice, const std::optional<LatticeCheck<I>>& check, const std::string& p,
                  const char* backend, int digits) {
     std::cout << "family " << to_string(lattice.family) << " at p = " << p << "  (" << backend << ")\n";
+    std::cout << "  source      " << family_source(lattice.family) << "\n";
     auto text = [digits](const I& x) {
         const DecimalEnclosure decimal = to_decimal(x, digits);
         return "[" + decimal.lo + ", " + decimal.hi + "]";
@@ -94,6 +95,7 @@ int run(const DensityOptions& options) {
             document["family"] = to_string(family);
             document["p"] = options.p;
             document["p_exact"] = rational_text(p);
+            document["source"] = family_source(family);
             document.update(family_json(lattice));
             document["packing"] = check ? lattice_check_json(*check, false) : Json(nullptr);
             if (check && check->verdict == Outcome::refuted) document["note"] = not_a_packing;
@@ -116,7 +118,7 @@ int run(const DensityOptions& options) {
 void add_density(CLI::App& app) {
     auto options = std::make_shared<DensityOptions>();
     CLI::App* command = app.add_subcommand("density", "Certified density of one lattice family at one p");
-    command->add_option("--family", options->family, "C0, C1 (p >= 1), O0 (1/2 < p <= 1) or O1 (p >= 1/2)")->required();
+    command->add_option("--family", options->family, "C0, C1 (p >= 1), O0 (1/2 < p <= 1), O1 (p >= 1/2) or D14 (1/2 <= p <= 1)")->required();
     command->add_option("--p", options->p, std::string("deformation parameter: a decimal (1.15) or a fraction (23/20); ") + supported_p_text)->required();
     command->add_option("--digits", options->digits,
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");

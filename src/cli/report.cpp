@@ -151,7 +151,9 @@ int run(const ReportOptions& options, bool default_output) {
                 for (std::size_t k = 0; k + 1 < line.size(); ++k) std::cout << std::left << std::setw(widths[k] + 2) << line[k];
                 std::cout << line.back() << "\n";
             };
-            std::cout << "Certified phi = V_sb / |det| of the JST 2009 lattice families (" << field.backend() << ")\n";
+            std::cout << "Certified phi = V_sb / |det| of the lattice families (C0, C1, O0, O1: JST 2009; D14: Dostert & "
+                         "Vallentin 2020) ("
+                      << field.backend() << ")\n";
             print_line(heading);
             for (const auto& line : table) print_line(line);
             std::cout << "phi enclosures [lo, hi] to " << decimals << " decimals, lo rounded down and hi up. After the\n"

@@ -41,47 +41,89 @@ Json basis_json(const Basis<DInterval>& basis) {
     return rows;
 }
 
-// O1 by continuation: the root of Eq. (12) is followed from p = 1/2 (Minkowski (1/6, 2/3), or
-// the second root (5/12, 1/6)) piece by piece; on each piece Krawczyk proves that a box around
-// the previous root holds exactly one root for every p of the piece. This avoids the full (q, s)
-// search of enclose_family_at, whose cost explodes on some pieces (NOTES.md 5.5).
-struct O1Tracker {
-    double q, s;
+// O1 and D14 by continuation: the root of the contact equations is followed from p = 1/2 (O1:
+// Minkowski (q, s) = (1/6, 2/3), or the second root (5/12, 1/6); D14: (x, y, z) = (1/3, 1/6, 1/2))
+// piece by piece; on each piece Krawczyk proves that a box around the previous root holds exactly
+// one root for every p of the piece. This avoids the full root search of enclose_family_at, whose
+// cost explodes on some pieces (NOTES.md 5.5).
+struct BranchTracker {
+    std::vector<double> root;
+    // D14: the box of the previous piece, whose root at the shared end the next box must hold
+    // (the link the checker requires; near p*_o a wider box could catch the mirror root).
+    std::optional<std::vector<DInterval>> previous;
 };
 
-FamilyLattice<DInterval> track_o1(O1Tracker& tracker, const DInterval& p) {
-    FamilyLattice<DInterval> lattice{Family::O1};
+template <class F>
+std::optional<KrawczykResult<DInterval>> follow_root(const F& equations, const std::vector<double>& root, const DInterval& p,
+                                                     bool first_nonnegative) {
     const DoubleField field;
-    auto equations = [&](const auto& x) { return o1_equations(x, p); };
     const double radius = 2 * width_upper(p) + 1e-9;
     for (double r = radius; r < 0.05; r *= 4) {
-        const std::vector<DInterval> box{from_doubles(field.integer(0), std::max(0.0, tracker.q - r), tracker.q + r),
-                                         from_doubles(field.integer(0), tracker.s - r, tracker.s + r)};
-        const KrawczykResult<DInterval> proof = krawczyk_isolate(equations, box, 0.0, 60);
-        if (proof.status != RootStatus::unique || !contains(proof.initial_box[0], proof.box[0]) ||
-            !contains(proof.initial_box[1], proof.box[1]))
-            continue;
-        tracker = {mid_double(proof.box[0]), mid_double(proof.box[1])};
-        lattice.parameters = {{"l", o1_l(p)}, {"q", proof.box[0]}, {"s", proof.box[1]}};
-        lattice.search.push_back({proof.initial_box, RootStatus::unique, proof.box, proof.reason});
-        lattice.branches.push_back({{{"q", proof.box[0]}, {"s", proof.box[1]}}, lattice.search.back()});
-        lattice.basis = o1_basis(proof.box[0], proof.box[1], p);
-        lattice.status = Outcome::proved;
-        lattice.message = "root of Eq. (12) followed by continuation from p = 1/2; Krawczyk: unique in the box";
+        std::vector<DInterval> box;
+        for (std::size_t k = 0; k < root.size(); ++k)
+            box.push_back(from_doubles(field.integer(0), k == 0 && first_nonnegative ? std::max(0.0, root[k] - r) : root[k] - r,
+                                       root[k] + r));
+        KrawczykResult<DInterval> proof = krawczyk_isolate(equations, box, 0.0, 60);
+        bool inside = proof.status == RootStatus::unique;
+        for (std::size_t k = 0; inside && k < box.size(); ++k) inside = contains(proof.initial_box[k], proof.box[k]);
+        if (inside) return proof;
+    }
+    return std::nullopt;
+}
+
+// D14: does the new box hold, at the piece's lower end p0, the root that the previous box holds?
+bool linked_to_previous(const BranchTracker& tracker, const std::vector<DInterval>& box, const Rational& p0) {
+    if (!tracker.previous) return true;
+    const DInterval at = DoubleField{}.rational(p0);
+    const KrawczykResult<DInterval> root = krawczyk_isolate([&](const auto& x) { return d14_equations(x, at); }, box, 0.0, 60);
+    if (root.status != RootStatus::unique) return false;
+    for (std::size_t k = 0; k < box.size(); ++k)
+        if (!contains((*tracker.previous)[k], root.box[k])) return false;
+    return true;
+}
+
+FamilyLattice<DInterval> track_branch(Family family, BranchTracker& tracker, const DInterval& p, const Rational& lo) {
+    FamilyLattice<DInterval> lattice{family};
+    const bool o1 = family == Family::O1;
+    const std::string equations_name = o1 ? "Eq. (12)" : "the D14 equations";
+    std::optional<KrawczykResult<DInterval>> proof;
+    if (o1) proof = follow_root([&](const auto& x) { return o1_equations(x, p); }, tracker.root, p, true);
+    else proof = follow_root([&](const auto& x) { return d14_equations(x, p); }, tracker.root, p, false);
+    if (proof && !o1 && !linked_to_previous(tracker, proof->initial_box, lo)) {
+        lattice.message = "the box of the D14 equations on this piece does not hold the root of the previous piece";
         return lattice;
     }
-    lattice.message = "Krawczyk could not follow the root of Eq. (12) onto this piece";
+    if (!proof) {
+        lattice.message = "Krawczyk could not follow the root of " + equations_name + " onto this piece";
+        return lattice;
+    }
+    const std::vector<DInterval>& root = proof->box;
+    tracker.root.clear();
+    for (const DInterval& x : root) tracker.root.push_back(mid_double(x));
+    if (!o1) tracker.previous = proof->initial_box;
+    lattice.search.push_back({proof->initial_box, RootStatus::unique, root, proof->reason});
+    if (o1) {
+        lattice.parameters = {{"l", o1_l(p)}, {"q", root[0]}, {"s", root[1]}};
+        lattice.branches.push_back({{{"q", root[0]}, {"s", root[1]}}, lattice.search.back()});
+        lattice.basis = o1_basis(root[0], root[1], p);
+    } else {
+        lattice.parameters = {{"x", root[0]}, {"y", root[1]}, {"z", root[2]}};
+        lattice.branches.push_back({lattice.parameters, lattice.search.back()});
+        lattice.basis = d14_basis(root[0], root[1], root[2]);
+    }
+    lattice.status = Outcome::proved;
+    lattice.message = "root of " + equations_name + " followed by continuation from p = 1/2; Krawczyk: unique in the box";
     return lattice;
 }
 
 // One piece, without subdivision.
 AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
-                       O1Tracker* tracker = nullptr) {
+                       BranchTracker* tracker = nullptr) {
     AuditPiece piece;
     piece.lo = lo;
     piece.hi = hi;
     const DInterval p = piece_interval(lo, hi);
-    const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_o1(*tracker, p) : enclose_family_at(family, p);
+    const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_branch(family, *tracker, p, lo) : enclose_family_at(family, p);
     piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
     piece.detail["family_status"] = lattice.status == Outcome::proved ? "certified"
                                     : lattice.status == Outcome::refuted ? "no_lattice"
@@ -129,6 +171,9 @@ AuditRange claimed_audit_range(Family family) {
         case Family::C1: return {Rational(1), Rational(10), {}, "the claim is p >= 1; audited on [1, 10]"};
         case Family::O0: return {crossover_below, Rational(1), {crossover_above}, "claimed [p*_o, 1]; " + bracket};
         case Family::O1: return {Rational(1, 2), crossover_above, {crossover_below}, "claimed [1/2, p*_o]; " + bracket};
+        case Family::D14:
+            return {Rational(1, 2), crossover_above, {crossover_below},
+                    "Dostert and Vallentin prove (1/2, 0.79] and conjecture [1/2, p*_o]; " + bracket};
     }
     return {};
 }
@@ -137,6 +182,9 @@ AuditSettings default_audit_settings(Family family) {
     // O1's root search (two unknowns) costs grow fast with the width of p: keep pieces ~7e-4 and do not
     // bisect (an undecided piece still gets the certified midpoint check).
     if (family == Family::O1) return {300, 3};
+    // D14 follows its root by continuation (a small Krawczyk box per piece, no search), so the
+    // pieces may be wide; they only shrink where the root nears the fold at p*_o.
+    if (family == Family::D14) return {32, 12};
     return {16, 12};
 }
 
@@ -152,17 +200,21 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     ends.push_back(range.hi);
     std::sort(ends.begin(), ends.end());
     const Rational total = range.hi - range.lo;
-    std::optional<O1Tracker> tracker;
-    if (family == Family::O1) {
-        if (branch == AuditBranch::published) tracker = O1Tracker{1.0 / 6, 2.0 / 3};
-        else tracker = O1Tracker{5.0 / 12, 1.0 / 6};
+    std::optional<BranchTracker> tracker;
+    if (family == Family::O1 || family == Family::D14) {
+        if (family == Family::D14) tracker = BranchTracker{{1.0 / 3, 1.0 / 6, 1.0 / 2}, std::nullopt};
+        else if (branch == AuditBranch::published) tracker = BranchTracker{{1.0 / 6, 2.0 / 3}, std::nullopt};
+        else tracker = BranchTracker{{5.0 / 12, 1.0 / 6}, std::nullopt};
         if (range.lo != Rational(1, 2)) {
-            // Start the continuation from the complete root search at the exact left end.
+            // Start the continuation from the complete root search at the exact left end (D14:
+            // its branch root comes first).
             const FamilyLattice<DInterval> start = enclose_family_at(family, piece_interval(range.lo, range.lo));
+            if (start.branches.empty() || (family == Family::D14 && start.status != Outcome::proved))
+                throw std::runtime_error(std::string("no root of the ") + to_string(family) +
+                                         " equations on the branch at the start of the range");
             const std::size_t index = branch == AuditBranch::published ? 0 : start.branches.size() - 1;
-            if (start.branches.empty()) throw std::runtime_error("no root of Eq. (12) at the start of the range");
-            tracker = O1Tracker{mid_double(start.branches[index].unknowns[0].value),
-                                mid_double(start.branches[index].unknowns[1].value)};
+            tracker = BranchTracker{};
+            for (const auto& unknown : start.branches[index].unknowns) tracker->root.push_back(mid_double(unknown.value));
         }
     }
     std::vector<long> counts;
@@ -176,8 +228,30 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     if (planned > settings.max_pieces)
         throw InputError("the audit would start with " + std::to_string(planned) + " pieces, more than the limit " +
                          std::to_string(settings.max_pieces));
+    // D14: once a piece at the subdivision floor breaks the continuation, a later root box is
+    // no longer tied to the branch through p = 1/2 (near p*_o it may hold the mirror root), so
+    // later pieces are not audited: they would certify nothing about the branch, and their
+    // bisection would grow full trees of 2^max_depth undecided pieces. (O1 keeps going: its
+    // point refutations need no chain.)
+    bool chain_broken = false;
+    auto progress_line = [&](const Rational& lo, const Rational& hi, const std::string& outcome) {
+        if (progress)
+            progress(std::string(to_string(family)) + " p in [" + decimal_or_fraction_text(lo) + ", " +
+                     decimal_or_fraction_text(hi) + "]: " + outcome);
+    };
     std::function<void(const Rational&, const Rational&, int)> audit = [&](const Rational& lo, const Rational& hi,
                                                                            int depth) {
+        if (chain_broken) {
+            AuditPiece piece;
+            piece.lo = lo;
+            piece.hi = hi;
+            piece.reason = "not audited: the continuation of the branch from p = 1/2 broke before this piece";
+            piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
+            piece.detail["family_status"] = "undecided";
+            progress_line(lo, hi, piece.outcome);
+            result.pieces.push_back(std::move(piece));
+            return;
+        }
         AuditPiece piece = audit_piece(family, lo, hi, tracker ? &*tracker : nullptr);
         piece.detail["lattice"] = branch == AuditBranch::published ? "published" : "second root of Eq. (12)";
         const bool settled = piece.outcome == "packing" || piece.outcome == "overlapping" || piece.outcome == "no_lattice";
@@ -191,12 +265,14 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
             return;
         }
         if (!settled) {
+            chain_broken = family == Family::D14;
             piece.reason += budget ? " (subdivision floor reached)"
                                    : " (piece limit " + std::to_string(settings.max_pieces) + " reached)";
             // A refutation at one exact p of the piece is still certified: try the midpoint.
             Rational middle = (lo + hi) / 2;
             middle.canonicalize();
-            O1Tracker copy = tracker ? *tracker : O1Tracker{};
+            BranchTracker copy = tracker ? *tracker : BranchTracker{};
+            copy.previous.reset();  // the midpoint is no end of the previous piece
             const AuditPiece point = audit_piece(family, middle, middle, tracker ? &copy : nullptr);
             piece.detail["midpoint_check"] = point.detail;
             if (point.outcome == "overlapping") {
@@ -205,9 +281,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
                 piece.reason += "; at p = " + rational_text(middle) + " the lattice overlaps (witness in midpoint_check)";
             }
         }
-        if (progress)
-            progress(std::string(to_string(family)) + " p in [" + decimal_or_fraction_text(lo) + ", " +
-                     decimal_or_fraction_text(hi) + "]: " + piece.outcome);
+        progress_line(lo, hi, piece.outcome);
         result.pieces.push_back(std::move(piece));
     };
     for (std::size_t k = 0; k + 1 < ends.size(); ++k) {

@@ -10,11 +10,13 @@ std::vector<Coefficients> family_contact_triples(Family family) {
         case Family::C1: return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, -1, 0}, {1, 0, -1}, {0, 1, -1}};
         case Family::O0: return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, -1}, {0, 1, -1}, {1, 1, -1}};
         case Family::O1: return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, -1, 0}, {1, 0, -1}};
+        // b1, b2, b3, b1 + b2, b2 + b3, b1 + b3, b1 + b2 + b3: Minkowski's seven pairs.
+        case Family::D14: return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}, {1, 1, 1}};
     }
     return {};
 }
 
-int claimed_contacts(Family) { return 12; }
+int claimed_contacts(Family family) { return family == Family::D14 ? 14 : 12; }
 
 template <class I>
 LatticeCheck<I> check_family_lattice(const FamilyLattice<I>& lattice, const I& p) {

@@ -1,5 +1,6 @@
-// The four lattice families of Jiao, Stillinger & Torquato (2009): their contact equations,
-// certified parameters, bases and densities phi = V_sb(p) / |det basis|.
+// The four lattice families of Jiao, Stillinger & Torquato (2009) and the 14-neighbour family
+// D14 of Dostert & Vallentin (2020): their contact equations, certified parameters, bases and
+// densities phi = V_sb(p) / |det basis|.
 //
 // Every equation is a template over the scalar of its unknowns (S) and of p (P), each an
 // interval or a Jet, so Newton/Krawczyk (d/d unknowns) and the crossover and slope
@@ -17,11 +18,13 @@
 
 namespace superpack {
 
-enum class Family { C0, C1, O0, O1 };
+enum class Family { C0, C1, O0, O1, D14 };
 
 const char* to_string(Family family);
 Family parse_family(const std::string& name);  // throws InputError
 std::vector<Family> all_families();
+// Where the family is defined, for the tables and JSON: the paper and its equations.
+std::string family_source(Family family);
 // Claimed domain in words and as a predicate on exact p (throws InputError outside it).
 std::string family_domain_text(Family family);
 void require_in_domain(Family family, const Rational& p);
@@ -144,6 +147,45 @@ Basis<T> o1_basis(const T& q, const T& s, const T& p) {
     return Basis<T>{{{two_l, two_l, -two_l}, {-(two * q), two * s, -(two * q)}, {two * q, -(two * q), -(two * s)}}};
 }
 
+// D14 (M. Dostert and F. Vallentin, New dense superball packings in three dimensions, Adv.
+// Geom. 20 (2020) 473-482, Theorem 4.2; their exponent is our 2p) in the unknowns (x, y, z):
+//   |x|^(2p) + |y|^(2p) + |z|^(2p) - 1 = 0,
+//   |x-y|^(2p) + |z-x|^(2p) + |y+z|^(2p) - 1 = 0,
+//   3 |-x+y+z|^(2p) - 1 = 0,
+// the unit equations of b1 = (-x, y, z) (and its cyclic images b2, b3), of b1 + b2 = (z-x, y-x,
+// y+z) (and b2 + b3, b3 + b1, the same terms permuted) and of b1 + b2 + b3 = (s, s, s), s = -x+y+z.
+template <class S, class P>
+std::vector<S> d14_equations(const std::vector<S>& v, const P& p) {
+    const auto field = scalar_field(p);
+    const auto two_p = field.integer(2) * p;
+    const auto one = field.integer(1);
+    const S& x = v[0];
+    const S& y = v[1];
+    const S& z = v[2];
+    return {pow_abs(x, two_p) + pow_abs(y, two_p) + pow_abs(z, two_p) - one,
+            pow_abs(x - y, two_p) + pow_abs(z - x, two_p) + pow_abs(y + z, two_p) - one,
+            field.integer(3) * pow_abs(y + z - x, two_p) - one};
+}
+
+// The search box of D14: [0, 9/8] x [-9/8, 9/8]^2 holds every root with x >= 0 (the first
+// equation bounds |x|, |y|, |z| by 1). Its ends are not +-1 so that no bisection point is
+// dyadic like the coordinates 1/2 of the roots at p = 1/2: a root on a piece's face is in the
+// interior of no piece, and Krawczyk could prove it in none.
+template <class I>
+std::vector<I> d14_search_box(const I& like) {
+    const auto field = field_of(like);
+    const I far = field.rational(Rational(9, 8));
+    return {hull(field.integer(0), far), hull(-far, far), hull(-far, far)};
+}
+
+// Rows 2 b1, 2 b2, 2 b3 (contacts of norm 2, the convention of the other families).
+template <class T>
+Basis<T> d14_basis(const T& x, const T& y, const T& z) {
+    const T two = constant_like(x, 2);
+    const T a = two * x, b = two * y, c = two * z;
+    return Basis<T>{{{-a, b, c}, {c, -a, b}, {b, c, -a}}};
+}
+
 // The certified description of one family at one p. Its status: proved (the lattice exists,
 // printed "certified"), refuted (certified not to exist, "no_lattice") or undecided.
 
@@ -165,9 +207,9 @@ struct FamilyLattice {
     Family family;
     Outcome status = Outcome::undecided;
     std::string message;                    // why, when not certified
-    std::vector<NamedValue<I>> parameters;  // s; or l, q, s; or c
+    std::vector<NamedValue<I>> parameters;  // s; or l, q, s; or c; or x, y, z
     std::vector<RootBranch<I>> branches;    // every certified root of the contact equations
-    std::vector<RootLeaf<I>> search;        // the partition behind "every root" (O1), or the
+    std::vector<RootLeaf<I>> search;        // the partition behind "every root" (O1, D14), or the
                                             // root-free [0, s) and the Newton box (C0, C1)
     std::optional<Basis<I>> basis;
     std::optional<I> volume, determinant, phi;
