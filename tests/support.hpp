@@ -28,6 +28,16 @@ inline const nlohmann::json& golden() {
     return data;
 }
 
+// D14's x, y, z and phi at seven p (scripts/make_d14_golden.py, mpmath at 60 digits).
+inline const nlohmann::json& d14_golden() {
+    static const nlohmann::json data = [] {
+        std::ifstream file(std::string(SUPERPACK_TEST_DATA) + "/d14.json");
+        REQUIRE(file.good());
+        return nlohmann::json::parse(file);
+    }();
+    return data["d14"];
+}
+
 // The reference value from mpmath (50 digits) as a ball of radius 1e-48: the generator is
 // not rigorous, so a test asks for overlap with this ball, never for equality.
 inline Ball reference(const std::string& decimal) {

@@ -1,7 +1,7 @@
 // superpack best: Minkowski's configurations recognised exactly, the densest certified lattice at
 // the two points where the answer is known (Gauss at p = 1, Minkowski at p = 1/2), and a search
-// that finds, on its own, the seven-pair lattice at p = 0.6 where no published family of Jiao et
-// al. is a packing.
+// that finds, on its own, D14's seven-pair lattice at p = 0.6, where no family of Jiao et al. is
+// a packing; local optimality certified where it holds and refused at a saddle.
 #include "support.hpp"
 #include "superpack/problems/best.hpp"
 
@@ -68,27 +68,39 @@ TEMPLATE_TEST_CASE("best at p = 1/2: Minkowski's octahedron lattice, phi = 18/19
     const BestLattice<I> best = find_best_lattice(Rational(1, 2), field, options);
     REQUIRE(best.status == Outcome::proved);
     CHECK(contains(best_phi(best), field.rational(Rational(18, 19))));
-    // O1's enclosed parameters cannot decide its contacts at p = 1/2; the search's guess snaps
-    // to the exact rational basis, whose 14 contacts the lattice check decides exactly.
-    REQUIRE(best.source == BestSource::search);
-    CHECK(best.checked[best.index].check.contacts() == 14);
+    CHECK(best_name(best) == "D14");
     CHECK(best.configuration.configuration == Configuration::seven_pairs);
+    // The search's densest guess snaps to the exact rational basis, whose 14 contacts the
+    // lattice check decides exactly: phi is 18/19 itself, not 18/19 (1 + 2^-40)^-3.
+    REQUIRE(!best.search.candidates.empty());
+    const SearchLattice<I> exact = check_search_lattice(best.search.candidates.front(), Rational(1, 2), field);
+    CHECK(exact.check.verdict == Outcome::proved);
+    CHECK(exact.check.contacts() == 14);
+    CHECK(contains(exact.phi, field.rational(Rational(18, 19))));
 }
 
-TEST_CASE("best at p = 0.6: the search finds a seven-pair lattice denser than every certified family") {
+TEST_CASE("best at p = 0.6: D14, and the search finds the same seven-pair lattice on its own") {
     const DoubleField field;
     BestOptions options;
     options.search.random_starts = 2;
     const BestLattice<DInterval> best = find_best_lattice(Rational(3, 5), field, options);
     REQUIRE(best.status == Outcome::proved);
+    CHECK(best.source == BestSource::family);
+    CHECK(best_name(best) == "D14");
     CHECK(best.configuration.configuration == Configuration::seven_pairs);
+    // No lattice of Jiao et al. is a packing at p = 0.6 (O0 and O1 overlap, C0 and C1 are outside).
     for (const FamilyEntry<DInterval>& entry : best.families)
-        if (entry.check.verdict == Outcome::proved && entry.lattice.phi) CHECK(certainly_less(*entry.lattice.phi, best_phi(best)));
-    // Dostert & Vallentin's 14-neighbour lattice at p = 0.6 has phi = 0.8786104367445...
-    // (mpmath, scripts/golden_best.py); the certified lattice is it scaled by 1 + 2^-40.
-    const double d14 = 0.878610436744504060005267835917;
-    CHECK(best_phi(best).upper() < d14 + 1e-15);
-    CHECK(best_phi(best).lower() > d14 - 1e-11);
+        if (entry.lattice.family != Family::D14) CHECK(entry.check.verdict != Outcome::proved);
+    // The search, started from O1 (not a packing here) and others, lands on D14's critical
+    // lattice: its densest candidate agrees with mpmath's phi to the search's precision.
+    std::optional<double> reference;
+    for (const auto& entry : d14_golden())
+        if (entry["p"] == "0.6") reference = std::stod(entry["phi"].get<std::string>());
+    REQUIRE(reference);
+    REQUIRE(!best.search.candidates.empty());
+    CHECK(std::fabs(best.search.candidates.front().density - *reference) < 1e-12);
+    CHECK(match_configuration(best.search.candidates.front().near_contacts).configuration == Configuration::seven_pairs);
+    CHECK(std::fabs(mid_double(best_phi(best)) - *reference) < 1e-13);
 }
 
 TEST_CASE("best refuses p below 1/2 and beyond 10^6") {

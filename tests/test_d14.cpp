@@ -11,19 +11,6 @@
 using namespace superpack;
 using namespace superpack::test;
 
-namespace {
-
-const nlohmann::json& d14_golden() {
-    static const nlohmann::json data = [] {
-        std::ifstream file(std::string(SUPERPACK_TEST_DATA) + "/d14.json");
-        REQUIRE(file.good());
-        return nlohmann::json::parse(file);
-    }();
-    return data["d14"];
-}
-
-}  // namespace
-
 // Arb at 30 digits at two of the seven p only: its root search costs 1.7 s (p = 0.52) to 4.2 s
 // (p = 0.79) each, and `make test` should stay short (the others: `superpack density --digits 30`).
 TEST_CASE("D14 against mpmath at seven p in (1/2, 0.79]: binary64 (all) and Arb 30 digits (two) contain it and overlap") {

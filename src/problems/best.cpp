@@ -64,6 +64,21 @@ std::optional<Basis<Rational>> snapped(const DoubleBasis& guess) {
 }
 
 template <class Field, class I = typename Field::Interval>
+SearchLattice<I> check_candidate(const SearchCandidate& candidate, const Rational& p, const Field& field) {
+    // A rational critical lattice is checked as it is; any other guess scaled up.
+    Basis<Rational> exact = exact_scaled(candidate.basis);
+    LatticeCheck<I> check;
+    const std::optional<Basis<Rational>> fraction = snapped(candidate.basis);
+    if (fraction) check = check_exact_lattice(*fraction, p, field);
+    if (fraction && check.verdict == Outcome::proved)
+        exact = *fraction;
+    else
+        check = check_exact_lattice(exact, p, field);
+    const I phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(exact, field)));
+    return {candidate, exact, std::move(check), phi};
+}
+
+template <class Field, class I = typename Field::Interval>
 BestLattice<I> find_best(const Rational& p, const Field& field, const BestOptions& options) {
     require_best_domain(p);
     BestLattice<I> best;
@@ -102,17 +117,7 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
             ++best.rejected;
             continue;
         }
-        // A rational critical lattice is checked as it is; any other guess scaled up.
-        Basis<Rational> exact = exact_scaled(candidate.basis);
-        LatticeCheck<I> check;
-        const std::optional<Basis<Rational>> fraction = snapped(candidate.basis);
-        if (fraction) check = check_exact_lattice(*fraction, p, field);
-        if (fraction && check.verdict == Outcome::proved)
-            exact = *fraction;
-        else
-            check = check_exact_lattice(exact, p, field);
-        const I phi = volume / abs(determinant(enclose_basis(exact, field)));
-        best.checked.push_back({candidate, exact, std::move(check), phi});
+        best.checked.push_back(check_candidate(candidate, p, field));
     }
 
     std::optional<double> top;
@@ -160,6 +165,13 @@ void require_best_domain(const Rational& p) {
                          " is below 1/2: the search and the lattice check need a convex superball (p >= 1/2)");
     if (p > Rational(1000000))
         throw InputError("best: p = " + decimal_or_fraction_text(p) + " is beyond the supported p <= 10^6 of the search");
+}
+
+SearchLattice<DInterval> check_search_lattice(const SearchCandidate& candidate, const Rational& p, const DoubleField& field) {
+    return check_candidate(candidate, p, field);
+}
+SearchLattice<Ball> check_search_lattice(const SearchCandidate& candidate, const Rational& p, const BallField& field) {
+    return check_candidate(candidate, p, field);
 }
 
 BestLattice<DInterval> find_best_lattice(const Rational& p, const DoubleField& field, const BestOptions& options) {

@@ -63,6 +63,11 @@ void require_best_domain(const Rational& p);
 BestLattice<DInterval> find_best_lattice(const Rational& p, const DoubleField& field, const BestOptions& options);
 BestLattice<Ball> find_best_lattice(const Rational& p, const BallField& field, const BestOptions& options);
 
+// One search candidate made exact (snapped to small fractions, else scaled by 1 + 2^-40) and
+// checked by the lattice check.
+SearchLattice<DInterval> check_search_lattice(const SearchCandidate& candidate, const Rational& p, const DoubleField& field);
+SearchLattice<Ball> check_search_lattice(const SearchCandidate& candidate, const Rational& p, const BallField& field);
+
 // The best lattice's phi and basis.
 template <class I>
 const I& best_phi(const BestLattice<I>& best);
