@@ -158,7 +158,9 @@ int run(const ReportOptions& options, bool default_output) {
             for (const auto& line : table) print_line(line);
             std::cout << "phi enclosures [lo, hi] to " << decimals << " decimals, lo rounded down and hi up. After the\n"
                       << "enclosure: ' ' a certified packing (phi is its density), 'x' certified to overlap (not a\n"
-                      << "packing: its phi is no packing density), '?' undecided. 'densest' ranks certified packings only.\n"
+                      << "packing: its phi is no packing density), '?' undecided. 'densest' ranks these families' certified\n"
+                      << "packings only; `superpack best --p P` also searches all lattices: on p*_o < p < 1 it certifies\n"
+                      << "lattices denser than O0 (0.24% at p = 0.9, NOTES.md section 9).\n"
                       << "full enclosures and root proofs: " << options.output << "\n";
         }
         if (undecided > 0)
