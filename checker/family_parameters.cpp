@@ -86,12 +86,11 @@ FamilyParameters replay_o0(Context& context, const Json& proof, const std::strin
     return {{{"c", c}}, {{"c", c}}, o0_basis(c)};
 }
 
-// O1: the pieces partition [0,1] x [-1,1], which holds every root of Eq. 12 with q >= 0; the
-// roots of `unique` pieces are distinct, and (q, s) is the one with the largest s (the
-// Minkowski branch, which exists for p < ln3/ln4).
-FamilyParameters replay_o1(Context& context, const Json& proof, const std::string& path, const Real& p,
-                           const std::string& p_path) {
-    const System system = octahedral_system(p);
+// The "all roots" proof of O1 and D14: one partition case whose pieces are root leaves of
+// `system`, covering `required` (a box of the unknowns, named `unknowns` and `required_words` in
+// rejections), with pairwise distinct roots. Returns the certified roots.
+std::vector<Box> replay_all_roots(Context& context, const Json& proof, const std::string& path, const System& system,
+                                  const Box& required, const std::string& unknowns, const std::string& required_words) {
     if (context.string_at(proof, "kind", path) != "all") context.malformed(path + ".kind", "expected \"all\"");
     const Json& cases = context.member(proof, "cases", path);
     if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
@@ -99,17 +98,31 @@ FamilyParameters replay_o1(Context& context, const Json& proof, const std::strin
     const std::string partition_path = path + ".cases[0]";
     std::vector<Box> roots;
     const Box covered = check_partition(context, cases[0], partition_path, [&](const Json& leaf, const Box& piece, const std::string& at) {
-        if (piece.size() != 2) context.malformed(at + ".box", "expected a (q, s) box");
+        if (piece.size() != required.size()) context.malformed(at + ".box", "expected a " + unknowns + " box");
         check_root_leaf(context, system, leaf, piece, at, &roots);
     });
     context.current_step = partition_path;
-    const mpfr_prec_t precision = p.precision();
-    context.require(covered.size() == 2 && subset(hull(integer(0, precision), integer(1, precision)), covered[0]) &&
-                        subset(hull(integer(-1, precision), integer(1, precision)), covered[1]),
-                    partition_path + ".box", "the partition does not cover [0,1] x [-1,1]");
+    bool covers = covered.size() == required.size();
+    for (std::size_t k = 0; covers && k < required.size(); ++k) covers = subset(required[k], covered[k]);
+    context.require(covers, partition_path + ".box", "the partition does not cover " + required_words);
     for (std::size_t a = 0; a < roots.size(); ++a)
         for (std::size_t b = a + 1; b < roots.size(); ++b)
             context.require(disjoint(roots[a], roots[b]), partition_path, "two pieces may hold the same root");
+    return roots;
+}
+
+// O1: the pieces partition [0,1] x [-1,1], which holds every root of Eq. 12 with q >= 0; the
+// roots of `unique` pieces are distinct, and (q, s) is the one with the largest s (the
+// Minkowski branch, which exists for p < ln3/ln4).
+FamilyParameters replay_o1(Context& context, const Json& proof, const std::string& path, const Real& p,
+                           const std::string& p_path) {
+    const System system = octahedral_system(p);
+    const mpfr_prec_t precision = p.precision();
+    const std::string partition_path = path + ".cases[0]";
+    const std::vector<Box> roots =
+        replay_all_roots(context, proof, path, system,
+                         {hull(integer(0, precision), integer(1, precision)), hull(integer(-1, precision), integer(1, precision))},
+                         "(q, s)", "[0,1] x [-1,1]");
     const Real crossover = log(integer(3, precision)) / log(integer(4, precision));
     context.require(less(p, crossover), p_path, "p is not below p*_o = ln3/ln4, where the Minkowski branch ends");
     context.require(!roots.empty(), partition_path, "no root of Eq. (12) with q >= 0");
@@ -132,24 +145,11 @@ FamilyParameters replay_o1(Context& context, const Json& proof, const std::strin
 // the one root of the system on the branch.
 FamilyParameters replay_d14(Context& context, const Json& proof, const std::string& path, const Real& p) {
     const System system = d14_system(p);
-    if (context.string_at(proof, "kind", path) != "all") context.malformed(path + ".kind", "expected \"all\"");
-    const Json& cases = context.member(proof, "cases", path);
-    if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
-    context.require(cases.size() == 1, path + ".cases", "expected one case: the partition");
-    const std::string partition_path = path + ".cases[0]";
-    std::vector<Box> roots;
-    const Box covered = check_partition(context, cases[0], partition_path, [&](const Json& leaf, const Box& piece, const std::string& at) {
-        if (piece.size() != 3) context.malformed(at + ".box", "expected an (x, y, z) box");
-        check_root_leaf(context, system, leaf, piece, at, &roots);
-    });
-    context.current_step = partition_path;
     const mpfr_prec_t precision = p.precision();
+    const std::string partition_path = path + ".cases[0]";
     const Real unit = hull(integer(0, precision), integer(1, precision)), symmetric = hull(integer(-1, precision), integer(1, precision));
-    context.require(covered.size() == 3 && subset(unit, covered[0]) && subset(symmetric, covered[1]) && subset(symmetric, covered[2]),
-                    partition_path + ".box", "the partition does not cover [0,1] x [-1,1] x [-1,1]");
-    for (std::size_t a = 0; a < roots.size(); ++a)
-        for (std::size_t b = a + 1; b < roots.size(); ++b)
-            context.require(disjoint(roots[a], roots[b]), partition_path, "two pieces may hold the same root");
+    const std::vector<Box> roots =
+        replay_all_roots(context, proof, path, system, {unit, symmetric, symmetric}, "(x, y, z)", "[0,1] x [-1,1] x [-1,1]");
     std::vector<std::size_t> on_branch;
     for (std::size_t k = 0; k < roots.size(); ++k) {
         const Box& r = roots[k];
