@@ -70,6 +70,19 @@ inline bool proof_step(const std::string& path) {
     return !path.empty() && path != "claim.text" && (path.size() < 8 || path.substr(path.size() - 8) != ".decimal");
 }
 
+// A copy of `original` with the bound at `pointer` moved inward (tamper_bound), replayed by the
+// checker: the report, and the bound before and after, for the test's own assertions.
+struct TamperedReplay {
+    superpack_checker::VerifyReport report;
+    std::string before, after;
+};
+inline TamperedReplay replay_tampered(const nlohmann::json& original, const std::string& pointer) {
+    nlohmann::json copy = original;
+    const std::string before = copy[nlohmann::json::json_pointer(pointer)].get<std::string>();
+    const std::string after = tamper_bound(copy, pointer);
+    return {superpack_checker::verify_document(copy), before, after};
+}
+
 // The step at which the checker rejects `document`, or "(not rejected: <verdict>)": one
 // comparison asserts both that the file is invalid and where.
 inline std::string rejected_at(const nlohmann::json& document) {

@@ -47,7 +47,8 @@ Document proof_file(const std::string& name) {
 
 using superpack::test::collect_bounds;
 using superpack::test::proof_step;
-using superpack::test::tamper_bound;
+using superpack::test::replay_tampered;
+using superpack::test::TamperedReplay;
 using superpack::test::tamper_inward;
 
 // Moves every exact bound under the given pointers inward (except those whose pointer holds
@@ -60,14 +61,10 @@ long tamper_all(const Document& original, const std::vector<std::string>& roots,
     for (const std::string& bound : bounds) {
         if (!skip.empty() && bound.find(skip) != std::string::npos) continue;
         ++changed;
-        Document copy = original;
-        const Document::json_pointer pointer(bound);
-        const std::string before = copy[pointer].get<std::string>();
-        tamper_bound(copy, bound);
-        const auto report = verify_document(copy);
-        INFO(bound << ": " << before << " -> " << copy[pointer].get<std::string>() << " (" << report.path << ")");
-        CHECK(report.verdict == Verdict::invalid);
-        CHECK(proof_step(report.path));
+        const TamperedReplay replay = replay_tampered(original, bound);
+        INFO(bound << ": " << replay.before << " -> " << replay.after << " (" << replay.report.path << ")");
+        CHECK(replay.report.verdict == Verdict::invalid);
+        CHECK(proof_step(replay.report.path));
     }
     return changed;
 }
