@@ -173,10 +173,7 @@ int run_scan(const BestCommandOptions& options) {
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
         const int print_digits = table_digits(digits, !options.digits.empty());
-        auto pair = [print_digits](const I& x) {
-            const DecimalEnclosure text = to_decimal(x, print_digits);
-            return text.lo + "," + text.hi;
-        };
+        auto pair = [print_digits](const I& x) { return csv_enclosure(x, print_digits); };
         std::cout << "p,best,phi_lo,phi_hi,locally_optimal";
         for (Family family : all_families())
             std::cout << "," << to_string(family) << "_lo," << to_string(family) << "_hi," << to_string(family) << "_packing";

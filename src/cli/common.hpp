@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "superpack/arith/decimal.hpp"
 #include "superpack/cert/output_header.hpp"
 #include "superpack/problems/family_json.hpp"
 
@@ -61,6 +62,13 @@ int with_field(const std::string& digits_text, long maximum_digits, const Body& 
     } catch (const std::domain_error& error) {
         throw Failure(exit_undecided, undecided_at_precision(error.what(), digits, maximum_digits));
     }
+}
+
+// An enclosure as two CSV fields "lo,hi" (lo rounded down, hi up) to `digits` digits.
+template <class I>
+std::string csv_enclosure(const I& x, int digits) {
+    const DecimalEnclosure text = to_decimal(x, digits);
+    return text.lo + "," + text.hi;
 }
 
 // Digits of a table entry: what --digits asked for, or 17 (enough for binary64) without it.

@@ -122,10 +122,7 @@ int run_scan(const SuperdiskCliOptions& options) {
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
         const int print_digits = table_digits(digits, !options.digits.empty());
-        auto csv_pair = [print_digits](const I& x) {
-            const DecimalEnclosure text = to_decimal(x, print_digits);
-            return text.lo + "," + text.hi;
-        };
+        auto csv_pair = [print_digits](const I& x) { return csv_enclosure(x, print_digits); };
         std::cout << "p,phi_Lambda0_lo,phi_Lambda0_hi,phi_Lambda1_lo,phi_Lambda1_hi,optimal_phi_lo,optimal_phi_hi,"
                      "attained_by\n";
         int code = exit_ok;
