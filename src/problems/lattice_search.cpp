@@ -271,14 +271,13 @@ SearchResult search_dense_lattices(double p, double volume, const std::vector<Se
     for (const SearchStart& start : all) {
         DoubleBasis b = normalised(start.basis, p);
         b = normalised(pattern_search(b, p, random, result.evaluations), p);
-        SearchCandidate candidate{start.name, b, 0, {}, false};
+        SearchCandidate candidate{start.name, b, 0, {}};
         // The pattern search stops near, not at, a kink: the active set is guessed at growing
         // tolerances, and the first that Newton's method turns into a KKT point is kept.
         for (double tolerance : {1e-7, 1e-5, 1e-4, 1e-3, 1e-2}) {
             const std::optional<KktPoint> point = kkt_point(b, p, near_shortest(b, p, tolerance));
             if (point) {
                 candidate.basis = normalised(point->basis, p);
-                candidate.polished = true;
                 break;
             }
         }

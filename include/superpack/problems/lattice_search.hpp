@@ -38,7 +38,6 @@ struct SearchCandidate {
     // The coefficient vectors (one per +-pair, in `basis`) whose norm is within 1e-9 of the
     // shortest: the contacts of the critical lattice the candidate approximates.
     std::vector<std::array<long, 3>> near_contacts;
-    bool polished = false;  // Newton on the KKT system converged from the pattern search's point
 };
 
 struct SearchResult {
