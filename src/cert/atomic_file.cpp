@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 namespace superpack {
@@ -83,6 +84,59 @@ void sync_directory(const std::string& path, const std::string& target) {
     if (!synced) throw FileError("wrote '" + target + "' but cannot sync its directory: " + reason);
 }
 
+// A fresh exclusive temporary file beside the target, open, with the mode a new file gets.
+struct Temporary {
+    std::string path;
+    int descriptor;
+};
+
+Temporary create_temporary(const std::string& target) {
+    require_writable_target(target);
+    const Location location = locate(target);
+    remove_stale_temporaries(location);
+    std::string temporary = location.directory + "/" + location.name + partial_marker + std::to_string(getpid()) + "-XXXXXX";
+    // mkostemp opens with O_CREAT | O_EXCL: it never follows a link planted at the name.
+    const int descriptor = mkostemp(temporary.data(), O_CLOEXEC);
+    if (descriptor < 0) throw FileError("cannot write '" + target + "': cannot create a temporary file: " + system_error_text());
+    if (fchmod(descriptor, creation_mode()) != 0) {
+        const std::string reason = system_error_text();
+        close(descriptor);
+        unlink(temporary.c_str());
+        throw FileError("cannot write '" + target + "': " + reason);
+    }
+    return {temporary, descriptor};
+}
+
+// Syncs and closes the temporary and renames it over the target; `written` false (or any
+// failure) removes it instead and throws FileError with `reason`.
+void commit(const Temporary& temporary, const std::string& target, bool written, std::string reason) {
+    if (written && fsync(temporary.descriptor) != 0) {
+        written = false;
+        reason = system_error_text();
+    }
+    if (close(temporary.descriptor) != 0 && written) {
+        written = false;
+        reason = system_error_text();
+    }
+    if (!written) {
+        unlink(temporary.path.c_str());
+        throw FileError("cannot write '" + target + "': " + reason);
+    }
+    if (rename(temporary.path.c_str(), target.c_str()) != 0) {
+        const std::string rename_reason = system_error_text();
+        unlink(temporary.path.c_str());
+        throw FileError("cannot write '" + target + "': " + rename_reason);
+    }
+    sync_directory(locate(target).directory, target);
+}
+
+// Whether the name still holds the file the descriptor has open (a regular file).
+bool same_file(const std::string& path, int descriptor) {
+    struct stat named {}, opened {};
+    return lstat(path.c_str(), &named) == 0 && fstat(descriptor, &opened) == 0 && S_ISREG(named.st_mode) &&
+           named.st_dev == opened.st_dev && named.st_ino == opened.st_ino;
+}
+
 }  // namespace
 
 void require_writable_target(const std::string& path) {
@@ -108,29 +162,22 @@ void require_writable_target(const std::string& path) {
 }
 
 void write_atomically(const std::string& path, const std::string& content) {
-    require_writable_target(path);
-    const Location location = locate(path);
-    remove_stale_temporaries(location);
-    std::string temporary = location.directory + "/" + location.name + partial_marker + std::to_string(getpid()) + "-XXXXXX";
-    // mkostemp opens with O_CREAT | O_EXCL: it never follows a link planted at the name.
-    const int descriptor = mkostemp(temporary.data(), O_CLOEXEC);
-    if (descriptor < 0) throw FileError("cannot write '" + path + "': cannot create a temporary file: " + system_error_text());
-    bool written = fchmod(descriptor, creation_mode()) == 0 && write_all(descriptor, content) && fsync(descriptor) == 0;
-    std::string reason = written ? "" : system_error_text();
-    if (close(descriptor) != 0 && written) {
-        written = false;
-        reason = system_error_text();
+    const Temporary temporary = create_temporary(path);
+    const bool written = write_all(temporary.descriptor, content);
+    commit(temporary, path, written, written ? "" : system_error_text());
+}
+
+void write_atomically_by(const std::string& path, const std::function<void(const std::string& temporary)>& fill) {
+    const Temporary temporary = create_temporary(path);
+    try {
+        fill(temporary.path);
+    } catch (...) {
+        close(temporary.descriptor);
+        unlink(temporary.path.c_str());
+        throw;
     }
-    if (!written) {
-        unlink(temporary.c_str());
-        throw FileError("cannot write '" + path + "': " + reason);
-    }
-    if (rename(temporary.c_str(), path.c_str()) != 0) {
-        const std::string rename_reason = system_error_text();
-        unlink(temporary.c_str());
-        throw FileError("cannot write '" + path + "': " + rename_reason);
-    }
-    sync_directory(location.directory, path);
+    const bool same = same_file(temporary.path, temporary.descriptor);
+    commit(temporary, path, same, "its temporary file '" + temporary.path + "' was replaced while it was written");
 }
 
 void create_default_directory(const std::string& path) {

@@ -3,6 +3,7 @@
 // (O_CREAT | O_EXCL | O_NOFOLLOW, a random suffix) in the target's own directory, is fsynced,
 // renamed over the target, and the directory is fsynced.
 #pragma once
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,12 @@ void require_writable_target(const std::string& path);
 // its rename leaves one behind; the next write to the same target removes those of processes
 // that no longer run (regular files only, never following a link).
 void write_atomically(const std::string& path, const std::string& content);
+
+// The same for content another program writes by name (gnuplot's PNG): `fill` gets the path of
+// the fresh, empty temporary file and must leave it complete; then it is synced and renamed
+// over `path`, but only if the name still holds the file created for it. When `fill` throws, the
+// temporary is removed and the exception passes on.
+void write_atomically_by(const std::string& path, const std::function<void(const std::string& temporary)>& fill);
 
 // Creates the one directory `path` if it is missing (its parent must exist): for the default
 // out/ of report and audit only; a directory the user names must exist.
