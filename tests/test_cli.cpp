@@ -2,7 +2,10 @@
 #include <array>
 #include <filesystem>
 #include <cstdio>
+#include <cstring>
 #include <memory>
+
+#include <sys/stat.h>
 
 #include <stdlib.h>
 #include <unistd.h>
@@ -17,15 +20,16 @@ struct Run {
     std::string out, err;
 };
 
-// Runs the binary with `arguments` (shell words) in `directory` (empty: the current one).
-Run run(const std::string& arguments, const std::string& directory = "") {
+// Runs the binary with `arguments` (shell words) in `directory` (empty: the current one), with
+// `environment` (shell assignments such as "PATH=/x") for it alone.
+Run run(const std::string& arguments, const std::string& directory = "", const std::string& environment = "") {
     // stderr goes to an exclusive temporary file (mkstemp: no name another process can take).
     std::string err_path = (std::filesystem::temp_directory_path() / "superpack-test-stderr-XXXXXX").string();
     const int descriptor = mkstemp(err_path.data());
     REQUIRE(descriptor >= 0);
     close(descriptor);
-    const std::string command = (directory.empty() ? "" : "cd '" + directory + "' && ") + std::string(SUPERPACK_BINARY) + " " +
-                                arguments + " 2>" + err_path;
+    const std::string command = (directory.empty() ? "" : "cd '" + directory + "' && ") + environment + " " +
+                                std::string(SUPERPACK_BINARY) + " " + arguments + " 2>" + err_path;
     Run result{0, "", ""};
     FILE* pipe = popen(command.c_str(), "r");
     REQUIRE(pipe != nullptr);
@@ -186,7 +190,7 @@ TEST_CASE("limits are stated and enforced, contradictions refused, undecided is 
     check_error("density --family C0 --p 1.5 --digits 100000", 2, "from 1 to");
     check_error("best --p 0.4", 2, "below 1/2");
     check_error("best --p 1 --starts 5000", 2, "--starts: 0 to 1000");
-    check_error("best --scan 0.5:1:0.1", 2, "--scan needs --csv", false);
+    check_error("best --scan 0.5:1:0.1", 2, "--scan needs --csv or --plot", false);
     check_error("best --p 1 --scan 0.5:1:0.1 --csv", 2, "not both", false);
     check_error("best --scan 0.5:100:0.1 --csv", 2, "at most 200", false);
     check_error("best --scan 0.3:1:0.1 --csv", 2, "below 1/2", false);
@@ -282,4 +286,107 @@ TEST_CASE("density says whether the lattice is a packing, tables honour --digits
         ++rows;
     }
     CHECK(rows == 4);
+}
+
+namespace {
+
+std::vector<std::string> entries(const std::string& directory) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(directory)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+unsigned long big_endian(const unsigned char* bytes) {
+    return (static_cast<unsigned long>(bytes[0]) << 24) | (static_cast<unsigned long>(bytes[1]) << 16) |
+           (static_cast<unsigned long>(bytes[2]) << 8) | bytes[3];
+}
+
+// A stand-in for gnuplot in a directory of its own, to put first in PATH.
+std::string fake_gnuplot(const std::string& directory, const std::string& body) {
+    const std::string path = directory + "/gnuplot";
+    std::ofstream(path) << "#!/bin/sh\n" << body << "\n";
+    chmod(path.c_str(), 0755);
+    return "PATH=" + directory;
+}
+
+}  // namespace
+
+TEST_CASE("best --scan --plot writes the PNG atomically and prints the table or the CSV") {
+    const Scratch scratch;
+    const std::string png = scratch.path + "/best.png";
+    std::ofstream(png) << "an older file";
+    const Run table = run("best --scan 0.6:0.7:0.05 --starts 1 --plot " + png);
+    INFO(table.err);
+    REQUIRE(table.status == 0);
+    CHECK(table.err.find("wrote " + png + "\n") != std::string::npos);
+    CHECK(lines(table.out) == 3);
+    CHECK(table.out.find("0.65     phi [") != std::string::npos);
+    CHECK(table.out.find("D14") != std::string::npos);
+    // The signature, then the IHDR chunk: width and height big-endian.
+    std::ifstream file(png, std::ios::binary);
+    unsigned char head[24] = {};
+    file.read(reinterpret_cast<char*>(head), sizeof head);
+    REQUIRE(file.gcount() == 24);
+    CHECK(std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0);
+    CHECK(std::memcmp(head + 12, "IHDR", 4) == 0);
+    CHECK(big_endian(head + 16) == 1000);
+    CHECK(big_endian(head + 20) == 650);
+    CHECK(entries(scratch.path) == std::vector<std::string>{"best.png"});
+    // Again with --csv: the CSV on stdout, and the PNG is a new file renamed over the old one
+    // (another inode), not the old one rewritten in place.
+    struct stat before {}, after {};
+    REQUIRE(stat(png.c_str(), &before) == 0);
+    const Run csv = run("best --scan 0.6:0.65:0.05 --starts 1 --csv --plot " + png);
+    REQUIRE(csv.status == 0);
+    CHECK(csv.out.rfind("p,best,phi_lo,phi_hi,locally_optimal,", 0) == 0);
+    CHECK(lines(csv.out) == 3);
+    CHECK(csv.err.find("wrote " + png + "\n") != std::string::npos);
+    REQUIRE(stat(png.c_str(), &after) == 0);
+    CHECK(after.st_ino != before.st_ino);
+    CHECK(entries(scratch.path) == std::vector<std::string>{"best.png"});
+}
+
+TEST_CASE("best --plot refuses bad targets and a missing or failing gnuplot before the scan and leaves no file") {
+    const Scratch scratch;
+    // check_error wants exactly one line on stderr: the scan's progress lines would be more.
+    check_error("best --p 0.6 --plot " + scratch.path + "/best.png", 2, "--plot needs --scan", false);
+    check_error("best --scan 0.6:0.7:0.05 --plot " + scratch.path, 2, "a directory", false);
+    check_error("best --scan 0.6:0.7:0.05 --plot " + scratch.path + "/missing/best.png", 2, "does not exist", false);
+    std::ofstream(scratch.path + "/victim") << "precious";
+    std::filesystem::create_symlink(scratch.path + "/victim", scratch.path + "/link.png");
+    check_error("best --scan 0.6:0.7:0.05 --plot " + scratch.path + "/link.png", 2, "symbolic link", false);
+    std::ifstream victim(scratch.path + "/victim");
+    CHECK(std::string(std::istreambuf_iterator<char>(victim), {}) == "precious");
+    CHECK(entries(scratch.path) == std::vector<std::string>{"link.png", "victim"});
+
+    // No gnuplot in PATH (the binary is named by its absolute path).
+    const Scratch empty, output;
+    const Run missing = run("best --scan 0.6:0.7:0.05 --plot best.png", output.path, "PATH=" + empty.path);
+    CHECK(missing.status == 2);
+    CHECK(lines(missing.err) == 1);
+    CHECK(missing.err.find("gnuplot not found: install gnuplot-nox") != std::string::npos);
+    CHECK(missing.out.empty());
+    // A gnuplot that fails says why, in one line.
+    const Scratch failing_bin;
+    const Run failing = run("best --scan 0.6:0.7:0.05 --plot best.png", output.path,
+                            fake_gnuplot(failing_bin.path, "echo 'gnuplot> set terminal pngcairo' >&2; echo '   line 0: no cairo' >&2; exit 3"));
+    CHECK(failing.status == 2);
+    CHECK(lines(failing.err) == 1);
+    CHECK(failing.err.find("gnuplot failed (exit status 3): line 0: no cairo") != std::string::npos);
+    CHECK(entries(output.path).empty());
+}
+
+TEST_CASE("best --plot: a gnuplot that writes no PNG leaves the old file and no temporary") {
+    const Scratch bin, output;
+    std::ofstream(output.path + "/best.png") << "an older file";
+    // It reads its script to the end and exits 0 without writing the output.
+    const Run run_result = run("best --scan 0.6:0.6:0.05 --starts 0 --plot best.png", output.path,
+                               fake_gnuplot(bin.path, "while read -r line; do :; done; exit 0"));
+    INFO(run_result.err);
+    CHECK(run_result.status == 2);
+    CHECK(run_result.err.find("gnuplot wrote no PNG for 'best.png'") != std::string::npos);
+    CHECK(entries(output.path) == std::vector<std::string>{"best.png"});
+    std::ifstream old(output.path + "/best.png");
+    CHECK(std::string(std::istreambuf_iterator<char>(old), {}) == "an older file");
 }

@@ -1,10 +1,12 @@
 // superpack best --p P [--digits D] [--json] [--certificate FILE] [--seed S] [--starts N]
-// superpack best --scan a:b:h --csv [--digits D] [--seed S] [--starts N]
+// superpack best --scan a:b:h [--csv] [--plot FILE.png] [--digits D] [--seed S] [--starts N]
 // The densest lattice packing of the superball at p that superpack certifies (problems/best.hpp).
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
 #include "common.hpp"
+#include "plot.hpp"
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/certificate.hpp"
@@ -17,7 +19,7 @@ namespace superpack::cli {
 namespace {
 
 struct BestCommandOptions {
-    std::string p, digits, certificate, scan;
+    std::string p, digits, certificate, scan, plot;
     unsigned seed = 1;
     int starts = 16;
     bool json = false, csv = false;
@@ -164,51 +166,127 @@ void print_table(const BestLattice<I>& best, int digits) {
               << best.rejected << " rejected\n";
 }
 
+template <class I>
+const FamilyEntry<I>* family_entry(const BestLattice<I>& best, Family family) {
+    for (const FamilyEntry<I>& entry : best.families)
+        if (entry.lattice.family == family) return &entry;
+    return nullptr;
+}
+
+void print_csv_header() {
+    std::cout << "p,best,phi_lo,phi_hi,locally_optimal";
+    for (Family family : all_families())
+        std::cout << "," << to_string(family) << "_lo," << to_string(family) << "_hi," << to_string(family) << "_packing";
+    std::cout << "\n";
+}
+
 // One CSV row per p: the best lattice, whether locally optimal, and every family (phi, and
 // whether it is a certified packing: yes, no (overlapping or no lattice), undecided, or outside
 // its domain).
+template <class I>
+void print_csv_row(const Rational& p, const BestLattice<I>& best, int digits) {
+    auto pair = [digits](const I& x) { return csv_enclosure(x, digits); };
+    std::cout << decimal_or_fraction_text(p) << ",";
+    if (best.status == Outcome::proved)
+        std::cout << "\"" << best_name(best) << "\"," << pair(best_phi(best)) << ","
+                  << (best.local->verdict == Outcome::proved ? "yes" : "not certified");
+    else
+        std::cout << ",,,";
+    for (Family family : all_families()) {
+        const FamilyEntry<I>* entry = family_entry(best, family);
+        if (!entry) {
+            std::cout << ",,,outside";
+            continue;
+        }
+        const bool packing = entry->check.verdict == Outcome::proved;
+        const bool no = entry->check.verdict == Outcome::refuted || entry->lattice.status == Outcome::refuted;
+        std::cout << "," << (entry->lattice.phi ? pair(*entry->lattice.phi) : std::string(",")) << ","
+                  << (packing ? "yes" : no ? "no" : "undecided");
+    }
+    std::cout << "\n";
+}
+
+// The scan as a table when it is not printed as CSV (--plot alone): the best lattice per p.
+template <class I>
+void print_table_row(const Rational& p, const BestLattice<I>& best, int digits) {
+    std::string p_text = decimal_or_fraction_text(p);
+    p_text.resize(std::max<std::size_t>(p_text.size(), 8), ' ');
+    std::cout << p_text << " ";
+    if (best.status != Outcome::proved) {
+        std::cout << "undecided (" << best.message << ")\n";
+        return;
+    }
+    const DecimalEnclosure phi = to_decimal(best_phi(best), digits);
+    std::cout << "phi [" << phi.lo << ", " << phi.hi << "]  locally optimal "
+              << (best.local->verdict == Outcome::proved ? "yes" : "not certified") << "  " << best_name(best) << "\n";
+}
+
+// The curves of --plot: the best lattice's phi, and each family's, solid where the lattice
+// check proves it a packing and dotted where it does not (phi = V/|det| is then no density).
+// Midpoints: the enclosures are far narrower than a pixel.
+template <class I>
+struct ScanCurves {
+    std::vector<PlotSeries> series;
+
+    ScanCurves() {
+        series.push_back({"densest certified lattice (superpack best)", Stroke::reference, 0, {}});
+        int color = 0;
+        for (Family family : all_families()) {
+            series.push_back({to_string(family), Stroke::solid, color, {}});
+            series.push_back({std::string(to_string(family)) + ", not a certified packing", Stroke::dotted, color, {}});
+            ++color;
+        }
+    }
+
+    void add(const Rational& p, const BestLattice<I>& best) {
+        const double x = p.get_d();
+        series[0].points.push_back({x, best.status == Outcome::proved ? std::optional<double>(mid_double(best_phi(best))) : std::nullopt});
+        std::size_t k = 1;
+        for (Family family : all_families()) {
+            const FamilyEntry<I>* entry = family_entry(best, family);
+            const bool packing = entry && entry->check.verdict == Outcome::proved;
+            const std::optional<double> y =
+                entry && entry->lattice.phi ? std::optional<double>(mid_double(*entry->lattice.phi)) : std::nullopt;
+            series[k++].points.push_back({x, packing ? y : std::nullopt});
+            series[k++].points.push_back({x, packing ? std::nullopt : y});
+        }
+    }
+};
+
+const PlotAxes scan_axes{"Densest certified lattice packings of superballs (curves through the midpoints of the certified enclosures)",
+                         "p", "lattice packing density phi", std::make_pair(0.7, 1.0)};
+
 int run_scan(const BestCommandOptions& options) {
     const std::vector<Rational> values = parse_scan(options.scan, max_scan_values);
     for (const Rational& p : values) require_best_domain(p);
+    if (!options.plot.empty()) require_plottable(options.plot);
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
         const int print_digits = table_digits(digits, !options.digits.empty());
-        auto pair = [print_digits](const I& x) { return csv_enclosure(x, print_digits); };
-        std::cout << "p,best,phi_lo,phi_hi,locally_optimal";
-        for (Family family : all_families())
-            std::cout << "," << to_string(family) << "_lo," << to_string(family) << "_hi," << to_string(family) << "_packing";
-        std::cout << "\n";
+        if (options.csv) print_csv_header();
         BestOptions best_options;
         best_options.search.seed = options.seed;
         best_options.search.random_starts = options.starts;
+        ScanCurves<I> curves;
         int code = exit_ok;
         std::size_t done = 0;
         for (const Rational& p : values) {
             std::cerr << "best scan: p = " << decimal_or_fraction_text(p) << " (" << ++done << "/" << values.size() << ")\n";
             const BestLattice<I> best = find_best_lattice(p, field, best_options);
-            std::cout << decimal_or_fraction_text(p) << ",";
-            if (best.status == Outcome::proved)
-                std::cout << "\"" << best_name(best) << "\"," << pair(best_phi(best)) << ","
-                          << (best.local->verdict == Outcome::proved ? "yes" : "not certified");
+            if (options.csv)
+                print_csv_row(p, best, print_digits);
             else
-                std::cout << ",,,";
-            for (Family family : all_families()) {
-                const FamilyEntry<I>* entry = nullptr;
-                for (const FamilyEntry<I>& e : best.families)
-                    if (e.lattice.family == family) entry = &e;
-                if (!entry) {
-                    std::cout << ",,,outside";
-                    continue;
-                }
-                const bool packing = entry->check.verdict == Outcome::proved;
-                const bool no = entry->check.verdict == Outcome::refuted || entry->lattice.status == Outcome::refuted;
-                std::cout << "," << (entry->lattice.phi ? pair(*entry->lattice.phi) : std::string(",")) << ","
-                          << (packing ? "yes" : no ? "no" : "undecided");
-            }
-            std::cout << "\n";
+                print_table_row(p, best, print_digits);
+            curves.add(p, best);
             if (best.status != Outcome::proved) code = exit_undecided;
         }
-        if (code != exit_ok) throw Failure(code, "best scan: undecided: some p has no certified lattice (empty CSV fields)");
+        if (!options.plot.empty()) {
+            plot_png(options.plot, scan_axes, curves.series);
+            std::cerr << "wrote " << options.plot << "\n";
+        }
+        if (code != exit_ok)
+            throw Failure(code, std::string("best scan: undecided: some p has no certified lattice (") +
+                                    (options.csv ? "empty CSV fields)" : "undecided rows)"));
         return code;
     });
 }
@@ -216,11 +294,13 @@ int run_scan(const BestCommandOptions& options) {
 int run(const BestCommandOptions& options) {
     if (!options.scan.empty()) {
         if (!options.p.empty()) throw Failure(exit_usage, "best: give one of --p and --scan, not both");
-        if (!options.csv) throw Failure(exit_usage, "best: --scan needs --csv");
+        if (!options.csv && options.plot.empty()) throw Failure(exit_usage, "best: --scan needs --csv or --plot FILE.png");
         if (options.json || !options.certificate.empty())
-            throw Failure(exit_usage, "best: --scan prints CSV, without --json or --certificate");
+            throw Failure(exit_usage, "best: --scan prints CSV or a table, without --json or --certificate");
     } else if (options.csv) {
         throw Failure(exit_usage, "best: --csv needs --scan");
+    } else if (!options.plot.empty()) {
+        throw Failure(exit_usage, "best: --plot needs --scan a:b:h");
     } else if (options.p.empty()) {
         throw Failure(exit_usage, "best: give --p or --scan");
     }
@@ -272,8 +352,11 @@ void add_best(CLI::App& app) {
     CLI::App* command = app.add_subcommand("best", "The densest lattice packing superpack certifies at p: families and a search");
     command->add_option("--p", options->p, "deformation parameter 1/2 <= p <= 10^6: a decimal or a fraction");
     command->add_option("--scan", options->scan,
-                        "a:b:h: one CSV row per p = a, a + h, ... <= b (at most " + std::to_string(max_scan_values) + "); needs --csv");
-    command->add_flag("--csv", options->csv, "print the scan as CSV (scripts/plot-best.sh draws it)");
+                        "a:b:h: one row per p = a, a + h, ... <= b (at most " + std::to_string(max_scan_values) +
+                            "); needs --csv or --plot");
+    command->add_flag("--csv", options->csv, "print the scan as CSV (else a table)");
+    command->add_option("--plot", options->plot,
+                        "with --scan: draw phi of the best lattice and of every family against p into this PNG (gnuplot)");
     command->add_option("--digits", options->digits,
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
