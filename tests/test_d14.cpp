@@ -97,6 +97,30 @@ TEST_CASE("D14 ends at p*_o: no lattice beyond it, outside the domain refused") 
     CHECK(claimed_contacts(Family::D14) == 14);
 }
 
+// NOTES.md 11.10: at p*_o = ln3/ln4 (4^p = 3) the branch ends on the body-centred cubic lattice,
+// which is also O0 there (c = 1/2) and where the six-pair lattice S6 of (p*_o, 1) begins.
+TEMPLATE_TEST_CASE("D14 and O0 at p*_o are both the BCC lattice with seven contact pairs", "", Binary64, Arb128) {
+    using I = typename TestType::Interval;
+    const TestType field;
+    const I p = log(field.integer(3)) / log(field.integer(4));
+    const I half = field.rational(Rational(1, 2));
+    for (const I& equation : d14_equations(std::vector<I>{half, half, half}, p)) CHECK(contains_zero(equation));
+    CHECK(contains(octahedral_height(p), half));
+    // O0's rows (2,0,0), (0,2,0), (1,1,1) = U times D14's rows (-1,1,1), (1,-1,1), (1,1,-1), det U = 1.
+    const Basis<I> d14 = d14_basis(half, half, half), o0 = o0_basis(p);
+    const int U[3][3] = {{0, 1, 1}, {1, 0, 1}, {1, 1, 1}};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            auto entry = field.integer(0);
+            for (int k = 0; k < 3; ++k) entry = entry + field.integer(U[i][k]) * d14[k][j];
+            INFO("row " << i << ", column " << j);
+            CHECK(overlaps(entry, o0[i][j]));
+        }
+    // Seven pairs of contacts: (+-1, +-1, +-1) and 2 e_i have norm exactly 2 at p*_o.
+    const auto two = field.integer(2);
+    CHECK(contains(pow_nonneg(field.integer(3), field.integer(1) / (two * p)), two));
+}
+
 TEST_CASE("report: D14 is the densest certified packing at p = 0.6, and no lattice at p = 0.8 (exit 0)") {
     const std::string file = std::string(std::filesystem::temp_directory_path() / "superpack-test-d14-report.json");
     const std::string command = std::string(SUPERPACK_BINARY) + " report --p-values 0.6,0.8 --json --output " + file + " 2>/dev/null";
