@@ -45,8 +45,10 @@ std::vector<Triple> read_contact_pairs(Context& context, const Json& data) {
     for (std::size_t k = 0; k < list.size(); ++k) {
         const std::string at = path + "[" + std::to_string(k) + "]";
         const Triple t = read_triple(context, list[k], at);
-        context.require(t != Triple{0, 0, 0}, at, "the zero vector is no contact");
-        context.require(pairs.insert(canonical(t) ? t : Triple{-t[0], -t[1], -t[2]}).second, at, "a contact pair listed twice");
+        // One triple per +-pair, as the lattice checks list them: c and -c give the same system
+        // (the gradient of the norm is odd), so a claim could otherwise differ and still verify.
+        context.require(canonical(t), at, "not the triple of its +-pair whose first nonzero coefficient is positive");
+        context.require(pairs.insert(t).second, at, "a contact pair listed twice");
         contacts.push_back(t);
     }
     return contacts;

@@ -203,12 +203,14 @@ TEST_CASE("local-optimum: multipliers below 0, rho, the box, a contact triple, a
     }
     for (int j = 0; j < 3; ++j) data["basis"][2][j] = negated(data["basis"][2][j]);
     for (std::size_t i = 0; i < m; ++i) data["multipliers"][i] = negated(data["multipliers"][i]);
-    for (Document& c : data["contact_pairs"]) c[2] = -c[2].get<long>();
-    for (Document& c : data["contact_vectors"]) c[2] = -c[2].get<long>();
-    for (Document& c : flipped["proof"]["lattice"]["contacts"]) {  // one per pair, first nonzero entry > 0
-        const long a = c["coefficients"][0], b = c["coefficients"][1], d = -c["coefficients"][2].get<long>();
-        c["coefficients"] = a > 0 || (a == 0 && b > 0) ? triple(a, b, d) : triple(-a, -b, -d);
-    }
+    // The contact triples (a, b, c) become (a, b, -c), as one triple per pair, first nonzero entry > 0.
+    auto flip = [](const Document& c) {
+        const long a = c[0], b = c[1], d = -c[2].get<long>();
+        return a > 0 || (a == 0 && b > 0) ? triple(a, b, d) : triple(-a, -b, -d);
+    };
+    for (Document& c : data["contact_pairs"]) c = flip(c);
+    for (Document& c : data["contact_vectors"]) c = triple(c[0], c[1], -c[2].get<long>());
+    for (Document& c : flipped["proof"]["lattice"]["contacts"]) c["coefficients"] = flip(c["coefficients"]);
     data["determinant"] = negated(data["determinant"]);
     CHECK(rejected_at(flipped) == "claim.data.multipliers[0]");
 
@@ -238,10 +240,14 @@ TEST_CASE("local-optimum: multipliers below 0, rho, the box, a contact triple, a
     Document& first = changed["claim"]["data"]["contact_pairs"][0];
     first = triple(2 * first[0].get<long>(), 2 * first[1].get<long>(), 2 * first[2].get<long>());
     CHECK(rejected_at(changed) == "proof.kkt");
-    // A triple listed twice.
+    // A triple listed twice, or as its negative (the same pair: the same KKT system).
     Document twice = original;
     twice["claim"]["data"]["contact_pairs"][1] = twice["claim"]["data"]["contact_pairs"][0];
     CHECK(rejected_at(twice) == "claim.data.contact_pairs[1]");
+    Document negative = original;
+    Document& pair = negative["claim"]["data"]["contact_pairs"][0];
+    pair = triple(-pair[0].get<long>(), -pair[1].get<long>(), -pair[2].get<long>());
+    CHECK(rejected_at(negative) == "claim.data.contact_pairs[0]");
 
     // A basis entry nudged (inward by one leading digit; its decimal rendered again).
     CHECK(replay_tampered(original, "/claim/data/basis/1/2/lo").report.path == "claim.data.basis[1][2]");
@@ -277,7 +283,7 @@ TEST_CASE("local-optimum: a box on which a contact coordinate may be 0 at p < 1 
     set_p(o0, "17/20");
     o0["inputs"]["p_decimal"] = "0.85";
     o0["claim"]["data"]["contact_pairs"] = Document::array(
-        {triple(1, 0, 0), triple(0, 1, 0), triple(0, 0, 1), triple(-1, 0, 1), triple(0, -1, 1), triple(-1, -1, 1)});
+        {triple(1, 0, 0), triple(0, 1, 0), triple(0, 0, 1), triple(1, 0, -1), triple(0, 1, -1), triple(1, 1, -1)});
     const double height = std::pow(1 - std::pow(2.0, 1 - 1.7), 1 / 1.7);  // c of Eq. 5, a guess
     const mpq_class radius(1, 1 << 20);
     const std::vector<mpq_class> centre{2, 0, 0, 0, 2, 0, 1, 1, mpq_class(2 * height)};
