@@ -3,8 +3,12 @@
 // verify with best's phi; the checker's hand-written KKT Jacobian agrees with the producer's
 // automatic differentiation; and every tampering (a bound, a multiplier below 0, rho, the
 // Krawczyk box, a contact triple, p) and a box on which the norm's Hessian is unbounded are
-// rejected at a named step.
+// rejected at a named step. On the command line, best writes the kind where it applies and the
+// family's certificate at p = 1.
 #include <gmpxx.h>
+#include <stdlib.h>
+
+#include <filesystem>
 
 #include "checker/equations_kkt.hpp"
 #include "checker/render.hpp"
@@ -299,4 +303,23 @@ TEST_CASE("local-optimum: a box on which a contact coordinate may be 0 at p < 1 
         CHECK(report.path == "proof.kkt.box");
         CHECK(report.message.find("have no bound there") != std::string::npos);
     }
+}
+
+TEST_CASE("best --certificate: local-optimum where the critical lattice is locally optimal, family-lattice at p = 1") {
+    std::string pattern = (std::filesystem::temp_directory_path() / "superpack-local-optimum-XXXXXX").string();
+    REQUIRE(mkdtemp(pattern.data()) != nullptr);
+    const std::filesystem::path folder(pattern);
+    // At p = 1 rotations leave no isolated KKT point: today's certificate of the best lattice.
+    for (const auto& [p, kind] : {std::pair<std::string, std::string>{"2", "local-optimum"}, {"1", "family-lattice"}}) {
+        const std::string file = (folder / ("best-" + p + ".json")).string();
+        const std::string command = std::string(SUPERPACK_BINARY) + " best --p " + p + " --starts 2 --certificate '" + file +
+                                    "' > /dev/null 2>&1";
+        CHECK(std::system(command.c_str()) == 0);
+        std::ifstream in(file);
+        REQUIRE(in.good());
+        const Document document = Document::parse(in);
+        CHECK(document["claim"]["kind"] == kind);
+        CHECK(verify_document(document).verdict == Verdict::valid);
+    }
+    std::filesystem::remove_all(folder);
 }
