@@ -42,4 +42,9 @@ constexpr std::size_t max_mantissa_digits = static_cast<std::size_t>(max_precisi
 constexpr std::size_t max_exponent_digits = 8;
 constexpr std::size_t max_rational_characters = 10000;
 
+// Contact pairs of a local-optimum certificate (its KKT system has 9 + pairs unknowns): a lattice
+// packing of a superball with 1/2 < p < oo has at most 7 (NOTES.md 11.2.2, item 2); 13 allows the
+// cube's 13 pairs as well.
+constexpr std::size_t max_contact_pairs = 13;
+
 }  // namespace superpack_checker

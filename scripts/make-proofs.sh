@@ -79,9 +79,10 @@ certify audit-O0-p0.792481-1 audit --family O0 --output-directory "$scratch"
 certify audit-O1-p0.5-0.792482 audit --family O1 --output-directory "$scratch"
 certify audit-D14-p0.5-0.792482 audit --family D14 --output-directory "$scratch"
 
-# The densest lattices `superpack best` certifies (NOTES 11.8): at p = 0.6, the 14-neighbour
-# lattice, where no lattice of Jiao et al. is a packing; at p = 2, C1; at p = 0.9, a search
-# lattice denser than O0 (NOTES 9, "O0 is not the densest lattice on (p*_o, 1)").
+# The densest lattices `superpack best` certifies (NOTES 11.8), each a local-optimum certificate
+# (NOTES 8.9: the critical lattice is admissible and a strict local minimiser of |det|): at
+# p = 0.6, the 14-neighbour lattice, where no lattice of Jiao et al. is a packing; at p = 2, C1;
+# at p = 0.9, a lattice denser than O0 (NOTES 9, "O0 is not the densest lattice on (p*_o, 1)").
 certify best-p0.6 best --p 0.6
 certify best-p2 best --p 2
 certify best-p0.9 best --p 0.9

@@ -7,7 +7,8 @@ judges a mutated interval without the checker:
             t = 1 as a short decimal), taken from the committed references in tests/data/
             (make_golden.py, make_crossover_reference.py, make_superdisk_golden.py,
             make_superdisk_vertices.py, make_lattice_data.py) or computed here from the paper's
-            equations (derivatives of s and c at p = 1, witness norms of the audits);
+            equations (derivatives of s and c at p = 1, witness norms of the audits) or from the
+            KKT system of a local optimum (its basis, multipliers and phi);
   covers:   a list of intervals (argmin_t) that must hold each given value;
   within_original: a range the claim holds on (a piece of p), which may only shrink.
 An audit piece claims its witness norm for every p of the piece: the rule lists the norm at both
@@ -231,6 +232,43 @@ def audit(data):
     return values
 
 
+def local_optimum(data, proof):
+    """The KKT point (B, mu) of min det B subject to ||c_i B||_(2p) = 2 (NOTES.md 8.9), solved
+    here by Newton's method in mpmath from the middle of the certificate's root box, and its
+    volume, determinant and phi."""
+    p = as_mpf(Fraction(data["p"]))
+    q = 2 * p
+    contacts = data["contact_pairs"]
+
+    def equations(*x):
+        b = [[x[3 * k + j] for j in range(3)] for k in range(3)]
+        f = [b[(k + 1) % 3][(j + 1) % 3] * b[(k + 2) % 3][(j + 2) % 3]
+             - b[(k + 1) % 3][(j + 2) % 3] * b[(k + 2) % 3][(j + 1) % 3] for k in range(3) for j in range(3)]
+        constraints = []
+        for i, c in enumerate(contacts):
+            v = combine(b, c)
+            n = norm(v, p)
+            for k in range(3):
+                for j in range(3):
+                    f[3 * k + j] -= x[9 + i] * c[k] * mp.sign(v[j]) * fabs(v[j]) ** (q - 1) * n ** (1 - q)
+            constraints.append(n - 2)
+        return f + constraints
+
+    start = [(as_mpf(exact(x["lo"])) + as_mpf(exact(x["hi"]))) / 2 for x in proof["kkt"]["root"]]
+    x = findroot(equations, start, tol=mpf(10) ** -50)
+    b = [[x[3 * k + j] for j in range(3)] for k in range(3)]
+    det = mp.det(mp.matrix(b))
+    volume = (2 * gamma(1 + 1 / q)) ** 3 / gamma(1 + 3 / q)
+    values = {"/claim/data/volume": text(volume), "/claim/data/determinant": text(det),
+              "/claim/data/phi": text(volume / fabs(det))}
+    for k in range(3):
+        for j in range(3):
+            values["/claim/data/basis/%d/%d" % (k, j)] = text(b[k][j])
+    for i in range(len(contacts)):
+        values["/claim/data/multipliers/%d" % i] = text(x[9 + i])
+    return values
+
+
 def rules(document):
     claim, data = document["claim"], document["claim"]["data"]
     kind = claim["kind"]
@@ -249,6 +287,8 @@ def rules(document):
         values = lattice_witness(data, document["inputs"], None)
     elif kind == "family-lattice-check":
         values = lattice_witness(data, document["inputs"], data["family"])
+    elif kind == "local-optimum":
+        values = local_optimum(data, document["proof"])
     elif kind == "audit":
         values = audit(data)
         ranges = ["/claim/data/range", "/inputs/range", "/claim/data/pieces/*/p"]

@@ -12,6 +12,7 @@
 #include "superpack/cert/certificate.hpp"
 #include "superpack/cert/family_certificate.hpp"
 #include "superpack/cert/lattice_certificate.hpp"
+#include "superpack/cert/local_optimum_certificate.hpp"
 #include "superpack/problems/best.hpp"
 
 namespace superpack::cli {
@@ -329,7 +330,11 @@ int run(const BestCommandOptions& options) {
         document.update(best_json(best, total));
         if (!options.certificate.empty() && best.status == Outcome::proved) {
             try {
-                if (best.source == BestSource::family)
+                // A certified local optimum proves admissibility and phi of the critical lattice as
+                // well: it subsumes the lattice check of the best lattice.
+                if (best.local->verdict == Outcome::proved)
+                    write_certificate(options.certificate, local_optimum_certificate(*best.local, p, field, digits));
+                else if (best.source == BestSource::family)
                     write_certificate(options.certificate, family_certificate(best.families[best.index].lattice, p, field, digits));
                 else
                     write_certificate(options.certificate,
@@ -361,7 +366,8 @@ void add_best(CLI::App& app) {
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_option("--certificate", options->certificate,
-                        "write the certificate of the best lattice (family-lattice or lattice-check claim)");
+                        "write the certificate: local-optimum when the critical lattice is locally optimal, else the "
+                        "best lattice's family-lattice or lattice-check claim");
     command->add_option("--seed", options->seed, "seed of the search's random starts and directions (default 1)");
     command->add_option("--starts", options->starts,
                         "random starts besides the families, 0 to " + std::to_string(max_starts) + " (default 16)");

@@ -132,6 +132,8 @@ LocalOptimum<I> certify_smooth_local_optimum(const DoubleBasis& guess, const std
     auto equations = [&](const auto& x) { return kkt_equations(x, active, p); };
     const double target = std::ldexp(1.0, -static_cast<int>(field.bits()) + 12);
     const KrawczykResult<I> root = krawczyk_isolate(equations, box, target, 40);
+    result.contacts = active;
+    result.search_box = root.initial_box;
     if (root.status != RootStatus::unique) {
         result.reason = "Krawczyk did not prove a unique KKT point near the guess (" + root.reason +
                         "); at p = 1 rotations make the critical lattice non-isolated";

@@ -21,8 +21,10 @@ template <class I>
 struct LocalOptimum {
     Outcome verdict = Outcome::undecided;  // proved: a strict local minimiser; never refuted here
     std::string reason;
-    std::optional<Basis<I>> basis;          // the critical lattice's basis (Krawczyk box)
-    std::vector<I> multipliers;             // one per contact pair
+    std::vector<Coefficients> contacts;     // the contact triples, one per pair, in the basis below
+    std::vector<I> search_box;              // the box of x = (B, mu) in which Krawczyk proved one KKT point
+    std::optional<Basis<I>> basis;          // the critical lattice's basis (Krawczyk's root box)
+    std::vector<I> multipliers;             // one per contact pair, in the order of contacts
     std::optional<I> phi;                   // V(p) / |det| of the critical lattice
     std::optional<LatticeCheck<I>> check;   // admissibility on the box, contacts by the KKT equations
     double rho = 0;                         // the weight that made H + rho A^T A positive definite
