@@ -135,6 +135,12 @@ Json best_json(const BestLattice<I>& best, double total_seconds) {
     return document;
 }
 
+// "yes" when the critical lattice at the best one is a certified strict local minimiser.
+template <class I>
+const char* locally_optimal_word(const BestLattice<I>& best) {
+    return best.local->verdict == Outcome::proved ? "yes" : "not certified";
+}
+
 template <class I>
 void print_table(const BestLattice<I>& best, int digits) {
     auto text = [digits](const I& x) {
@@ -146,7 +152,7 @@ void print_table(const BestLattice<I>& best, int digits) {
         std::cout << "best         " << best_name(best) << "\n";
         std::cout << "phi          " << text(best_phi(best)) << "\n";
         std::cout << "configuration " << configuration_text(best.configuration) << "\n";
-        std::cout << "locally optimal " << (best.local->verdict == Outcome::proved ? "yes" : "not certified") << "  ("
+        std::cout << "locally optimal " << locally_optimal_word(best) << "  ("
                   << best.local->reason << ")\n";
         if (best.local->phi && best.local->verdict == Outcome::proved)
             std::cout << "critical phi " << text(*best.local->phi) << "\n";
@@ -190,7 +196,7 @@ void print_csv_row(const Rational& p, const BestLattice<I>& best, int digits) {
     std::cout << decimal_or_fraction_text(p) << ",";
     if (best.status == Outcome::proved)
         std::cout << "\"" << best_name(best) << "\"," << pair(best_phi(best)) << ","
-                  << (best.local->verdict == Outcome::proved ? "yes" : "not certified");
+                  << locally_optimal_word(best);
     else
         std::cout << ",,,";
     for (Family family : all_families()) {
@@ -219,7 +225,7 @@ void print_table_row(const Rational& p, const BestLattice<I>& best, int digits) 
     }
     const DecimalEnclosure phi = to_decimal(best_phi(best), digits);
     std::cout << "phi [" << phi.lo << ", " << phi.hi << "]  locally optimal "
-              << (best.local->verdict == Outcome::proved ? "yes" : "not certified") << "  " << best_name(best) << "\n";
+              << locally_optimal_word(best) << "  " << best_name(best) << "\n";
 }
 
 // The curves of --plot: the best lattice's phi, and each family's, solid where the lattice
