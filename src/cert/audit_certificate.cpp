@@ -46,6 +46,7 @@ Json family_lattice_check_certificate(const FamilyLattice<typename Field::Interv
     Json data = lattice_verdict_json(check);
     data["family"] = family;
     data["p"] = rational_text(p);
+    data.update(family_definition_json(lattice.family));
     Json claim{{"kind", "family-lattice-check"}, {"data", data}};
     Json inputs{{"family", family}, {"p", rational_text(p)}, {"p_decimal", decimal_or_fraction_text(p)}};
     Json proof{{"kind", "family-lattice-check"},

@@ -4,6 +4,7 @@
 
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/certificate_partition.hpp"
+#include "superpack/problems/s6.hpp"
 
 namespace superpack {
 
@@ -54,6 +55,14 @@ Json d14_proof(const FamilyLattice<I>& lattice, const I& p) {
     return Json{{"kind", "all"}, {"cases", cases}};
 }
 
+// S6: the Krawczyk leaf of the KKT point over (b00, ..., b22, mu1, ..., mu6), the format of the
+// local-optimum kind (NOTES.md 8.9): the box the proof is about and the root box in it.
+template <class I>
+Json s6_proof(const FamilyLattice<I>& lattice) {
+    const RootLeaf<I>& leaf = lattice.search.front();
+    return Json{{"kind", "krawczyk"}, {"status", "unique"}, {"box", box_json(leaf.piece)}, {"root", box_json(leaf.root)}};
+}
+
 bool canonical(const Coefficients& c) {
     for (long x : c)
         if (x != 0) return x > 0;
@@ -72,8 +81,16 @@ Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p) {
         case Family::O0: return Json{{"kind", "evaluation"}};
         case Family::O1: return o1_proof(lattice, p);
         case Family::D14: return d14_proof(lattice, p);
+        case Family::S6: return s6_proof(lattice);
     }
     throw std::logic_error("unknown family");
+}
+
+Json family_definition_json(Family family) {
+    if (family != Family::S6) return Json::object();
+    Json pairs = Json::array();
+    for (const Coefficients& c : s6_contact_triples()) pairs.push_back(coefficients_json(c));
+    return Json{{"contact_pairs", pairs}};
 }
 
 template <class I>
@@ -122,6 +139,7 @@ Json family_certificate(const FamilyLattice<typename Field::Interval>& lattice, 
                      {"volume", exact_interval_json(*lattice.volume)},
                      {"determinant", exact_interval_json(*lattice.determinant)},
                      {"phi", exact_interval_json(*lattice.phi)}});
+    data.update(family_definition_json(lattice.family));
     Json claim{{"kind", "family-lattice"}, {"data", data}};
     Json inputs{{"family", family}, {"p", rational_text(p)}, {"p_decimal", decimal_or_fraction_text(p)}};
     const Json proof{{"kind", "family-lattice"},

@@ -71,6 +71,15 @@ void write_audit_certificate(const std::string& path, const AuditResult& result)
 
 int run(const AuditOptions& options, bool default_directory) {
     std::vector<Family> families = options.family.empty() ? all_families() : std::vector{parse_family(options.family)};
+    if (families.size() == 1 && !unaudited_reason(families[0]).empty())
+        throw Failure(exit_undecided, "audit: " + unaudited_reason(families[0]));
+    // The default audit lists a family without an audit as a skipped row with its reason.
+    std::vector<Family> skipped;
+    for (Family family : families)
+        if (!unaudited_reason(family).empty()) skipped.push_back(family);
+    families.erase(std::remove_if(families.begin(), families.end(),
+                                  [](Family family) { return !unaudited_reason(family).empty(); }),
+                   families.end());
     if (options.second_root && (families.size() != 1 || families[0] != Family::O1))
         throw Failure(exit_usage, "--second-root needs --family O1");
     if (!options.certificate.empty() && (families.size() != 1 || options.second_root))
@@ -135,6 +144,10 @@ int run(const AuditOptions& options, bool default_directory) {
             }
         }
     }
+    for (Family family : skipped) {
+        audits.push_back(Json{{"family", to_string(family)}, {"skipped", unaudited_reason(family)}});
+        if (!options.json) std::cout << to_string(family) << ": skipped: " << unaudited_reason(family) << "\n";
+    }
     if (options.json) {
         document["audits"] = audits;
         document["undecided_pieces"] = undecided_pieces;
@@ -152,7 +165,7 @@ int run(const AuditOptions& options, bool default_directory) {
 void add_audit(CLI::App& app) {
     auto options = std::make_shared<AuditOptions>();
     CLI::App* command = app.add_subcommand("audit", "Certify a family over its claimed p range, piece by piece");
-    command->add_option("--family", options->family, "C0, C1, O0, O1 or D14 (default: all five)");
+    command->add_option("--family", options->family, "C0, C1, O0, O1, D14 or S6 (default: all; S6 is not audited yet: exit 4 with --family S6, a skipped row otherwise)");
     command->add_option("--p-range", options->p_range, "a:b exact, inside the family's domain (default: the claimed range); needs --family");
     command->add_flag("--second-root", options->second_root, "O1: audit the lattice of the other real root of Eq. (12)");
     command->add_option("--pieces", options->pieces,

@@ -111,7 +111,7 @@ void add_check_lattice(CLI::App& app) {
     CLI::App* command = app.add_subcommand("check-lattice", "Certify that a lattice is a superball packing (or find an overlap)");
     command->add_option("--p", options->p, std::string("deformation parameter p >= 1/2: a decimal or a fraction (") + supported_p_text + ")")->required();
     command->add_option("--basis", options->basis, "exact basis rows \"a,b,c; d,e,f; g,h,i\" (decimals or fractions)");
-    command->add_option("--family", options->family, "C0, C1, O0, O1 or D14 (its certified enclosures)");
+    command->add_option("--family", options->family, "C0, C1, O0, O1, D14 or S6 (its certified enclosures)");
     command->add_option("--digits", options->digits,
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
     command->add_flag("--json", options->json, "print one JSON document on stdout");

@@ -118,7 +118,7 @@ int run(const DensityOptions& options) {
 void add_density(CLI::App& app) {
     auto options = std::make_shared<DensityOptions>();
     CLI::App* command = app.add_subcommand("density", "Certified density of one lattice family at one p");
-    command->add_option("--family", options->family, "C0, C1 (p >= 1), O0 (1/2 < p <= 1), O1 (p >= 1/2) or D14 (1/2 <= p <= 1)")->required();
+    command->add_option("--family", options->family, "C0, C1 (p >= 1), O0 (1/2 < p <= 1), O1 (p >= 1/2), D14 (1/2 <= p <= 1) or S6 (ln3/ln4 < p < 1)")->required();
     command->add_option("--p", options->p, std::string("deformation parameter: a decimal (1.15) or a fraction (23/20); ") + supported_p_text)->required();
     command->add_option("--digits", options->digits,
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");

@@ -152,15 +152,15 @@ int run(const ReportOptions& options, bool default_output) {
                 std::cout << line.back() << "\n";
             };
             std::cout << "Certified phi = V_sb / |det| of the lattice families (C0, C1, O0, O1: JST 2009; D14: Dostert & "
-                         "Vallentin 2020) ("
+                         "Vallentin 2020; S6: superpack's six-pair family, NOTES.md 4.2) ("
                       << field.backend() << ")\n";
             print_line(heading);
             for (const auto& line : table) print_line(line);
             std::cout << "phi enclosures [lo, hi] to " << decimals << " decimals, lo rounded down and hi up. After the\n"
                       << "enclosure: ' ' a certified packing (phi is its density), 'x' certified to overlap (not a\n"
                       << "packing: its phi is no packing density), '?' undecided. 'densest' ranks these families' certified\n"
-                      << "packings only; `superpack best --p P` also searches all lattices: on p*_o < p < 1 it certifies\n"
-                      << "lattices denser than O0 (0.24% at p = 0.9, NOTES.md section 9).\n"
+                      << "packings only; `superpack best --p P` also searches all lattices (on p*_o < p < 1 it finds S6,\n"
+                      << "0.24% denser than O0 at p = 0.9, NOTES.md section 9).\n"
                       << "full enclosures and root proofs: " << options.output << "\n";
         }
         if (undecided > 0)

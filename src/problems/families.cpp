@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "superpack/problems/local_optimality.hpp"
+#include "superpack/problems/s6.hpp"
 #include "superpack/solve/guess.hpp"
 
 namespace superpack {
@@ -14,11 +16,12 @@ const char* to_string(Family family) {
         case Family::O0: return "O0";
         case Family::O1: return "O1";
         case Family::D14: return "D14";
+        case Family::S6: return "S6";
     }
     return "?";
 }
 
-std::vector<Family> all_families() { return {Family::C0, Family::C1, Family::O0, Family::O1, Family::D14}; }
+std::vector<Family> all_families() { return {Family::C0, Family::C1, Family::O0, Family::O1, Family::D14, Family::S6}; }
 
 std::string family_source(Family family) {
     const std::string jst = "Jiao, Stillinger & Torquato, Phys. Rev. E 79, 041309 (2009), ";
@@ -30,6 +33,9 @@ std::string family_source(Family family) {
         case Family::D14:
             return "Dostert & Vallentin, New dense superball packings in three dimensions, Adv. Geom. 20 (2020) 473-482, "
                    "Theorem 4.2";
+        case Family::S6:
+            return "superpack's own family (issue 12): the KKT point of min |det| for Minkowski's six pairs (configuration "
+                   "A3), NOTES.md 4.2";
     }
     return "";
 }
@@ -37,7 +43,7 @@ std::string family_source(Family family) {
 Family parse_family(const std::string& name) {
     for (Family family : all_families())
         if (name == to_string(family)) return family;
-    throw InputError("unknown family '" + name + "' (expected C0, C1, O0, O1 or D14)");
+    throw InputError("unknown family '" + name + "' (expected C0, C1, O0, O1, D14 or S6)");
 }
 
 std::string family_domain_text(Family family) {
@@ -47,9 +53,21 @@ std::string family_domain_text(Family family) {
         case Family::O0: return "1/2 < p <= 1";
         case Family::O1: return "p >= 1/2";
         case Family::D14: return "1/2 <= p <= 1";
+        case Family::S6: return "ln3/ln4 < p < 1";
     }
     return "";
 }
+
+namespace {
+
+// p*_o = ln 3 / ln 4, where the Minkowski branch of Eq. 12 reaches q = 0 (NOTES.md).
+template <class I>
+I octahedral_crossover(const I& like) {
+    const auto field = field_of(like);
+    return log(field.integer(3)) / log(field.integer(4));
+}
+
+}  // namespace
 
 void require_in_domain(Family family, const Rational& p) {
     const Rational half(1, 2);
@@ -70,6 +88,14 @@ void require_in_domain(Family family, const Rational& p) {
         case Family::O0: inside = p > half && p <= 1; break;
         case Family::O1: inside = p >= half; break;
         case Family::D14: inside = p >= half && p <= 1; break;
+        // p > p*_o = ln3/ln4 is decided on an enclosure: p is refused here when it lies
+        // certainly below (binary64), and enclose_family leaves it undecided when the field's
+        // enclosure cannot separate it from p*_o (next to p*_o).
+        case Family::S6: {
+            const DoubleField field;
+            inside = p < 1 && !certainly_less(field.rational(p), octahedral_crossover(field.integer(0)));
+            break;
+        }
     }
     if (!inside)
         throw InputError(std::string("p = ") + decimal_or_fraction_text(p) + " is outside the domain of " +
@@ -147,13 +173,6 @@ FamilyLattice<I> enclose_o0(const I& p) {
     lattice.parameters = {{"c", octahedral_height(p)}};
     finish(lattice, p, o0_basis(p));
     return lattice;
-}
-
-// p*_o = ln 3 / ln 4, where the Minkowski branch of Eq. 12 reaches q = 0 (NOTES.md).
-template <class I>
-I octahedral_crossover(const I& like) {
-    const auto field = field_of(like);
-    return log(field.integer(3)) / log(field.integer(4));
 }
 
 // O1: every root of Eq. 12 with q >= 0 (roots come in pairs q, -q) in the box
@@ -275,6 +294,57 @@ FamilyLattice<I> enclose_d14(const I& p) {
     return lattice;
 }
 
+// S6 (NOTES.md 4.2): the KKT point of min det B subject to ||c_i B||_(2p) = 2 for the six
+// triples of s6_contact_triples, on the branch through the seed at p = 9/10. The
+// floating-point continuation (s6_guess) only guesses it; Krawczyk on kkt_equations proves
+// exactly one KKT point in a small box about the guess, and the basis is that root box. A step
+// that fails leaves S6 undecided with the reason, never another lattice.
+template <class I>
+FamilyLattice<I> enclose_s6(const I& p) {
+    FamilyLattice<I> lattice{Family::S6};
+    const auto field = field_of(p);
+    // Below p*_o (decided here at the field's precision, where binary64 in require_in_domain could
+    // not) p is outside the domain, as any p there is.
+    if (certainly_less(p, octahedral_crossover(p)))
+        throw InputError("p is below p*_o = ln3/ln4: outside the domain of S6 (" + family_domain_text(Family::S6) + ")");
+    if (!certainly_less(octahedral_crossover(p), p)) {
+        lattice.message = "p is not certainly above p*_o = ln3/ln4 at this precision, where S6 begins (try --digits 30)";
+        return lattice;
+    }
+    if (!certainly_less(p, field.integer(1))) {
+        lattice.message = "p is not certainly below 1, where S6 ends (at p = 1 rotations leave no isolated KKT point)";
+        return lattice;
+    }
+    std::string failure;
+    const std::optional<KktPoint> guess = s6_guess(mid_double(p), failure);
+    if (!guess) {
+        lattice.message = failure;
+        return lattice;
+    }
+    const std::vector<Coefficients>& triples = s6_contact_triples();
+    KrawczykResult<I> root;
+    try {
+        root = isolate_kkt_point(*guess, triples, p);
+    } catch (const std::domain_error& error) {
+        lattice.message = std::string("an enclosure was too wide for a power's contract (") + error.what() + ")";
+        return lattice;
+    }
+    lattice.search.push_back({root.initial_box, root.status, root.box, root.reason});
+    if (root.status != RootStatus::unique) {
+        lattice.message = "Krawczyk did not prove a unique KKT point near the continued guess (" + root.reason + ")";
+        return lattice;
+    }
+    std::vector<NamedValue<I>> unknowns;
+    for (int k = 0; k < 9; ++k)
+        unknowns.push_back({"b" + std::to_string(k / 3) + std::to_string(k % 3), root.box[static_cast<std::size_t>(k)]});
+    for (std::size_t i = 0; i < triples.size(); ++i) unknowns.push_back({"mu" + std::to_string(i + 1), root.box[9 + i]});
+    lattice.branches.push_back({unknowns, lattice.search.back()});
+    lattice.parameters = unknowns;
+    const std::vector<I>& x = root.box;
+    finish(lattice, p, Basis<I>{{{x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}}});
+    return lattice;
+}
+
 }  // namespace
 
 template <class I>
@@ -285,6 +355,7 @@ FamilyLattice<I> enclose_family_at(Family family, const I& p) {
         case Family::O0: return enclose_o0(p);
         case Family::O1: return enclose_o1(p);
         case Family::D14: return enclose_d14(p);
+        case Family::S6: return enclose_s6(p);
     }
     return FamilyLattice<I>{family};
 }

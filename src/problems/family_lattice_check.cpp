@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "superpack/problems/s6.hpp"
+
 namespace superpack {
 
 std::vector<Coefficients> family_contact_triples(Family family) {
@@ -12,6 +14,8 @@ std::vector<Coefficients> family_contact_triples(Family family) {
         case Family::O1: return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, -1, 0}, {1, 0, -1}};
         // b1, b2, b3, b1 + b2, b2 + b3, b1 + b3, b1 + b2 + b3: Minkowski's seven pairs.
         case Family::D14: return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}, {1, 1, 1}};
+        // Minkowski's six pairs, contacts by the constraints n_i = 2 of the KKT system.
+        case Family::S6: return s6_contact_triples();
     }
     return {};
 }

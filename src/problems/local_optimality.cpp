@@ -78,6 +78,20 @@ bool certainly_positive_definite(const std::vector<std::vector<I>>& m) {
 
 }  // namespace
 
+template <class I>
+KrawczykResult<I> isolate_kkt_point(const KktPoint& guess, const std::vector<Coefficients>& active, const I& p) {
+    const auto field = field_of(p);
+    std::vector<I> box;
+    for (std::size_t k = 0; k < 9 + active.size(); ++k) {
+        const double x = k < 9 ? guess.basis[k / 3][k % 3] : guess.multipliers[k - 9];
+        const double radius = 1e-9 * std::max(1.0, std::fabs(x));
+        box.push_back(from_doubles(field.integer(0), x - radius, x + radius));
+    }
+    auto equations = [&](const auto& x) { return kkt_equations(x, active, p); };
+    const double target = std::ldexp(1.0, -static_cast<int>(field.bits()) + 12);
+    return krawczyk_isolate(equations, box, target, 40);
+}
+
 // Every step but the domain checks of certify_local_optimum.
 template <class I>
 LocalOptimum<I> certify_smooth_local_optimum(const DoubleBasis& guess, const std::vector<Coefficients>& contacts, const I& p);
@@ -123,15 +137,8 @@ LocalOptimum<I> certify_smooth_local_optimum(const DoubleBasis& guess, const std
         return result;
     }
     const std::size_t n = 9 + active.size();
-    std::vector<I> box;
-    for (std::size_t k = 0; k < n; ++k) {
-        const double x = k < 9 ? point->basis[k / 3][k % 3] : point->multipliers[k - 9];
-        const double radius = 1e-9 * std::max(1.0, std::fabs(x));
-        box.push_back(from_doubles(field.integer(0), x - radius, x + radius));
-    }
     auto equations = [&](const auto& x) { return kkt_equations(x, active, p); };
-    const double target = std::ldexp(1.0, -static_cast<int>(field.bits()) + 12);
-    const KrawczykResult<I> root = krawczyk_isolate(equations, box, target, 40);
+    const KrawczykResult<I> root = isolate_kkt_point(*point, active, p);
     result.contacts = active;
     result.search_box = root.initial_box;
     if (root.status != RootStatus::unique) {
@@ -198,6 +205,8 @@ template std::vector<Ball> kkt_equations(const std::vector<Ball>&, const std::ve
 template std::vector<Jet<DInterval>> kkt_equations(const std::vector<Jet<DInterval>>&, const std::vector<Coefficients>&,
                                                    const DInterval&);
 template std::vector<Jet<Ball>> kkt_equations(const std::vector<Jet<Ball>>&, const std::vector<Coefficients>&, const Ball&);
+template KrawczykResult<DInterval> isolate_kkt_point(const KktPoint&, const std::vector<Coefficients>&, const DInterval&);
+template KrawczykResult<Ball> isolate_kkt_point(const KktPoint&, const std::vector<Coefficients>&, const Ball&);
 template LocalOptimum<DInterval> certify_local_optimum(const DoubleBasis&, const std::vector<Coefficients>&, const DInterval&);
 template LocalOptimum<Ball> certify_local_optimum(const DoubleBasis&, const std::vector<Coefficients>&, const Ball&);
 

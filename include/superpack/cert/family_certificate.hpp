@@ -1,7 +1,8 @@
 // The certificate of claim kind "family-lattice": phi = V_sb / |det B| of one family (C0, C1,
 // O0, O1) at one exact p, with the proof that the contact equations were solved as the paper
 // asks (Newton box and root-free [0, s) for C0/C1; the Krawczyk partition of the (q, s) box for
-// O1), and the lattice check (packing, overlapping or undecided) that decides whether phi is a
+// O1; the partition of the (x, y, z) box for D14; the Krawczyk leaf of the KKT point for S6), and
+// the lattice check (packing, overlapping or undecided) that decides whether phi is a
 // packing density.
 #pragma once
 #include "superpack/cert/certificate.hpp"
@@ -15,6 +16,11 @@ namespace superpack {
 // Throws std::runtime_error unless lattice.status is certified.
 template <class I>
 Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p);
+
+// What a claim states of the family's definition beside its name: for S6 {"contact_pairs": the
+// six triples}, which the checker compares with its own; an empty object for the others, whose
+// equations the name fixes.
+Json family_definition_json(Family family);
 
 // A lattice verdict as a claim states it: {"verdict": "packing", "contacts", "contact_vectors"},
 // {"verdict": "overlapping", "witness": {"coefficients", "norm"}} or {"verdict": "undecided"};

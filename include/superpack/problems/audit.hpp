@@ -42,6 +42,11 @@ struct AuditRange {
 // replaced by a rational bracket that is checked rigorously (the bracketing piece is audited too).
 AuditRange claimed_audit_range(Family family);
 
+// Why the family has no audit yet, or "" when it has one. S6 is defined point by point (the KKT
+// point continued from p = 9/10, NOTES.md 4.2); an audit over pieces of p needs Krawczyk with p
+// an interval and a chain of boxes anchored at 9/10, which is not written yet.
+std::string unaudited_reason(Family family);
+
 struct AuditSettings {
     int initial_pieces = 16;
     int max_depth = 12;  // a piece is bisected at most this often when undecided

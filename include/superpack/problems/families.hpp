@@ -1,6 +1,6 @@
-// The four lattice families of Jiao, Stillinger & Torquato (2009) and the 14-neighbour family
-// D14 of Dostert & Vallentin (2020): their contact equations, certified parameters, bases and
-// densities phi = V_sb(p) / |det basis|.
+// The four lattice families of Jiao, Stillinger & Torquato (2009), the 14-neighbour family
+// D14 of Dostert & Vallentin (2020) and superpack's six-pair family S6 (problems/s6.hpp): their
+// contact equations, certified parameters, bases and densities phi = V_sb(p) / |det basis|.
 //
 // Every equation is a template over the scalar of its unknowns (S) and of p (P), each an
 // interval or a Jet, so Newton/Krawczyk (d/d unknowns) and the crossover and slope
@@ -18,7 +18,7 @@
 
 namespace superpack {
 
-enum class Family { C0, C1, O0, O1, D14 };
+enum class Family { C0, C1, O0, O1, D14, S6 };
 
 const char* to_string(Family family);
 Family parse_family(const std::string& name);  // throws InputError
@@ -207,10 +207,11 @@ struct FamilyLattice {
     Family family;
     Outcome status = Outcome::undecided;
     std::string message;                    // why, when not certified
-    std::vector<NamedValue<I>> parameters;  // s; or l, q, s; or c; or x, y, z
+    std::vector<NamedValue<I>> parameters;  // s; or l, q, s; or c; or x, y, z; or b00..b22, mu1..mu6
     std::vector<RootBranch<I>> branches;    // every certified root of the contact equations
     std::vector<RootLeaf<I>> search;        // the partition behind "every root" (O1, D14), or the
-                                            // root-free [0, s) and the Newton box (C0, C1)
+                                            // root-free [0, s) and the Newton box (C0, C1), or the
+                                            // Krawczyk leaf of the KKT point (S6)
     std::optional<Basis<I>> basis;
     std::optional<I> volume, determinant, phi;
 };

@@ -14,6 +14,7 @@
 
 #include "superpack/geometry/lattice.hpp"
 #include "superpack/problems/lattice_search.hpp"
+#include "superpack/solve/krawczyk.hpp"
 
 namespace superpack {
 
@@ -35,6 +36,13 @@ struct LocalOptimum {
 // n_i - 2. One template over the scalar (an interval, or a Jet for the Jacobian).
 template <class T, class P>
 std::vector<T> kkt_equations(const std::vector<T>& x, const std::vector<Coefficients>& active, const P& p);
+
+// Krawczyk on kkt_equations in a box of relative radius 1e-9 about a floating-point KKT point
+// (kkt_point), refined to the working precision: unique when the box holds exactly one KKT
+// point. The first step of certify_local_optimum, and the definition of the family S6 at p
+// (families.hpp), whose lattice is such a point.
+template <class I>
+KrawczykResult<I> isolate_kkt_point(const KktPoint& guess, const std::vector<Coefficients>& active, const I& p);
 
 // From a floating-point guess of the lattice (any basis of it) and its contact triples in that
 // basis (one per +-pair, or both signs). A basis with det < 0 is used with b3 negated, and the
