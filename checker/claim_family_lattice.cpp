@@ -5,7 +5,10 @@
 //           root-free partition of [0, lower end of the Newton box];
 //   O0:     a direct evaluation (nothing to solve);
 //   O1:     a partition of [0,1] x [-1,1] (all roots of the contact equations with q >= 0) into
-//           root-free and one-root pieces; (q, s) is the root with the largest s, and p < ln3/ln4.
+//           root-free and one-root pieces; (q, s) is the root with the largest s, and p < ln3/ln4;
+//   D14:    a partition of [0,1] x [-1,1]^2 with the one root on the branch;
+//   S6:     the Krawczyk leaf of the KKT point of the checker's own six triples (claim.data.
+//           contact_pairs must repeat them), ln3/ln4 < p < 1.
 // The checker recomputes s (or q, s), the basis, the volume and phi in its own arithmetic and
 // checks that each stated enclosure contains its own. The verdict is that of a
 // family-lattice-check certificate (family_verdict.hpp): "packing" (the enumeration), or
@@ -14,7 +17,7 @@
 // packing density.
 //
 // Keys read: claim.data {family, p, parameters, volume, determinant, phi, verdict, contacts,
-// contact_vectors | witness}; inputs {family, p, p_decimal}; proof {kind, parameters, lattice}.
+// contact_vectors | witness, contact_pairs (S6 only)}; inputs {family, p, p_decimal}; proof {kind, parameters, lattice}.
 #include "checker/family_verdict.hpp"
 #include "checker/literature.hpp"
 #include "checker/render.hpp"
@@ -47,6 +50,7 @@ std::string check_family_lattice(const Json& claim, Context& context) {
     const mpq_class p = context.rational_at(data, "p", "claim.data");
     context.require(context.rational_at(inputs, "p", "inputs") == p, "inputs.p", "the input p differs from the claim's");
     require_family_domain(context, family, p, p, "inputs.p");
+    check_family_definition(context, family, data);
     const Real p_interval = rational(p, context.precision());
     const Json& proof = context.member(document, "proof", "");
     if (context.string_at(proof, "kind", "proof") != "family-lattice") context.malformed("proof.kind", "expected \"family-lattice\"");
@@ -70,7 +74,7 @@ std::string check_family_lattice(const Json& claim, Context& context) {
                "to be a packing density.";
     }
     const FamilyVerdict result =
-        check_family_verdict(context, family_forms(family), replayed.symbols, p_interval, verdict, data, "claim.data", lattice, "proof.lattice");
+        check_family_verdict(context, lattice_forms(family), replayed.symbols, p_interval, verdict, data, "claim.data", lattice, "proof.lattice");
     if (result.packing) return lead + verdict_words(result) + ", of packing density phi = " + ratio + ".";
     const bool refutes_o1 = family == "O1" && p > mpq_class(1, 2);
     return lead + verdict_words(result) + ", so its " + ratio + " is not a packing density." +

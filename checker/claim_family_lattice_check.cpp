@@ -6,7 +6,8 @@
 // interval basis (family_verdict.hpp). Contacts are decided by the family's unit equations
 // (equations_audit.hpp), never by evaluating a norm that is exactly 2.
 //
-// Keys read: claim.data {family, p, verdict, contacts, contact_vectors | witness}; inputs
+// Keys read: claim.data {family, p, verdict, contacts, contact_vectors | witness, contact_pairs
+// (S6 only)}; inputs
 // {family, p, p_decimal}; proof {kind, parameters, lattice}.
 #include "checker/family_verdict.hpp"
 #include "checker/literature.hpp"
@@ -25,13 +26,14 @@ std::string check_family_lattice_check(const Json& claim, Context& context) {
     const mpq_class p = context.rational_at(data, "p", "claim.data");
     context.require(context.rational_at(inputs, "p", "inputs") == p, "inputs.p", "the input p differs from the claim's");
     require_family_domain(context, family, p, p, "inputs.p");
+    check_family_definition(context, family, data);
     if (context.string_at(proof, "kind", "proof") != "family-lattice-check")
         context.malformed("proof.kind", "expected \"family-lattice-check\"");
     const Real p_interval = rational(p, context.precision());
     const FamilyParameters replayed = replay_family_parameters(
         context, family, context.member(proof, "parameters", "proof"), "proof.parameters", p_interval, "inputs.p");
     const FamilyVerdict verdict =
-        check_family_verdict(context, family_forms(family), replayed.symbols, p_interval, context.string_at(data, "verdict", "claim.data"),
+        check_family_verdict(context, lattice_forms(family), replayed.symbols, p_interval, context.string_at(data, "verdict", "claim.data"),
                              data, "claim.data", context.member(proof, "lattice", "proof"), "proof.lattice");
     check_p_decimal(context, inputs, p);
     // O1 overlapping on (1/2, p*_o) (p < p*_o is part of the parameter proof) is the erratum.

@@ -1,5 +1,7 @@
 #include "checker/family_parameters.hpp"
 
+#include "checker/kkt_point.hpp"
+
 namespace superpack_checker {
 
 std::string read_family(Context& context, const Json& data, const Json& inputs) {
@@ -20,7 +22,13 @@ void require_family_domain(Context& context, const std::string& family, const mp
         context.require(lo >= half, path, "outside the domain p >= 1/2 of O1");
     else if (family == "D14")
         context.require(lo >= half && hi <= 1, path, "outside the domain 1/2 <= p <= 1 of D14");
-    else
+    else if (family == "S6") {
+        context.require(hi < 1, path, "outside the domain ln3/ln4 < p < 1 of S6: p is not below 1");
+        const mpfr_prec_t precision = context.precision();
+        const Real crossover = log(integer(3, precision)) / log(integer(4, precision));
+        context.require(less(crossover, rational(lo, precision)), path,
+                        "outside the domain ln3/ln4 < p < 1 of S6: p is not certainly above ln3/ln4");
+    } else
         context.malformed("claim.data.family", "unknown family \"" + family + "\"");
 }
 
@@ -177,7 +185,46 @@ FamilyParameters replay_d14(Context& context, const Json& proof, const std::stri
     return {{{"x", r[0]}, {"y", r[1]}, {"z", r[2]}}, {{"x", r[0]}, {"y", r[1]}, {"z", r[2]}}, d14_basis(r[0], r[1], r[2])};
 }
 
+// S6: the Krawczyk leaf proves exactly one KKT point (B, mu) of min det B subject to
+// ||c_i B||_(2p) = 2 for the checker's own six triples in the stored box; B is the lattice, its
+// nine entries the symbols of the lattice forms (kkt_forms).
+FamilyParameters replay_s6(Context& context, const Json& proof, const std::string& path, const Real& p) {
+    const KktPoint point = replay_kkt_point(context, s6_triples(), proof, path, p);
+    NamedReals parameters, symbols;
+    const std::vector<std::string> names = kkt_symbols();
+    for (std::size_t k = 0; k < names.size(); ++k) symbols.emplace_back(names[k], point.root[k]);
+    parameters = symbols;
+    for (std::size_t i = 0; i < point.multipliers.size(); ++i)
+        parameters.emplace_back("mu" + std::to_string(i + 1), point.multipliers[i]);
+    return {parameters, symbols, point.basis};
+}
+
 }  // namespace
+
+const std::vector<Triple>& s6_triples() {
+    static const std::vector<Triple> triples{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 1, -1}, {1, 0, -1}, {1, -1, 0}};
+    return triples;
+}
+
+void check_family_definition(Context& context, const std::string& family, const Json& data) {
+    const std::string path = "claim.data.contact_pairs";
+    // The other families state nothing more: an unread key is rejected by the document check.
+    if (family != "S6") return;
+    const Json& list = context.member(data, "contact_pairs", "claim.data");
+    if (!list.is_array()) context.malformed(path, "expected an array of triples");
+    const std::vector<Triple>& own = s6_triples();
+    context.require(list.size() == own.size(), path,
+                    "S6 has " + std::to_string(own.size()) + " contact pairs, the claim lists " + std::to_string(list.size()));
+    for (std::size_t k = 0; k < own.size(); ++k) {
+        const std::string at = path + "[" + std::to_string(k) + "]";
+        context.require(read_triple(context, list[k], at) == own[k], at,
+                        "not S6's contact triple " + triple_text(own[k]) + " (NOTES.md 4.2)");
+    }
+}
+
+FamilyForms lattice_forms(const std::string& family) {
+    return family == "S6" ? kkt_forms(s6_triples()) : family_forms(family);
+}
 
 System d14_system(const Real& p) {
     const D14Equations equations{p};
@@ -211,6 +258,7 @@ FamilyParameters replay_family_parameters(Context& context, const std::string& f
     if (family == "O0") return replay_o0(context, proof, path, p);
     if (family == "O1") return replay_o1(context, proof, path, p, p_path);
     if (family == "D14") return replay_d14(context, proof, path, p);
+    if (family == "S6") return replay_s6(context, proof, path, p);
     context.malformed("claim.data.family", "unknown family \"" + family + "\"");
 }
 

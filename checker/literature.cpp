@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "checker/equations_crossover.hpp"
+#include "checker/family_parameters.hpp"
 
 namespace superpack_checker {
 
@@ -124,6 +125,13 @@ std::string lattice_words(const std::string& family) {
                " (Theorem 4.2, their exponent 2p: basis 2(-x, y, z), 2(z, -x, y), 2(y, z, -x), (x, y, z) the root of "
                "|x|^(2p) + |y|^(2p) + |z|^(2p) = 1, |x-y|^(2p) + |z-x|^(2p) + |y+z|^(2p) = 1 and 3|-x+y+z|^(2p) = 1 with "
                "x, y, z > 0 and y < z)";
+    if (family == "S6") {
+        std::string triples;
+        for (const Triple& c : s6_triples()) triples += (triples.empty() ? "" : ", ") + triple_text(c);
+        return "the S6 lattice, superpack's own family (issue 12; NOTES.md 4.2), not a published one: the basis B of "
+               "the unique KKT point (B, mu) in the certified box of min det B subject to ||c B||_(2p) = 2 for Minkowski's "
+               "six pairs (configuration A3) c = " + triples;
+    }
     throw std::logic_error("unknown family " + family);
 }
 

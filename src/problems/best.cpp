@@ -120,22 +120,26 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
         best.checked.push_back(check_candidate(candidate, p, field));
     }
 
-    std::optional<double> top;
+    // A search lattice replaces the lattice named so far only when its certified phi is certainly
+    // larger: one that coincides with a family (S6 on (p*_o, 1): the search lattice is S6's basis
+    // scaled by 1 + 2^-40) or cannot be separated from it leaves the family named, whose lattice
+    // is certified by its own definition.
+    const I* top = nullptr;
     if (leader) {
         best.source = BestSource::family;
         best.index = *leader;
-        top = bar;
+        top = &*best.families[*leader].lattice.phi;
     }
     for (std::size_t k = 0; k < best.checked.size(); ++k) {
         const SearchLattice<I>& lattice = best.checked[k];
         if (lattice.check.verdict != Outcome::proved) continue;
-        if (!top || mid_double(lattice.phi) > *top) {
+        if (top == nullptr || certainly_less(*top, lattice.phi)) {
             best.source = BestSource::search;
             best.index = k;
-            top = mid_double(lattice.phi);
+            top = &lattice.phi;
         }
     }
-    if (!top) {
+    if (top == nullptr) {
         best.status = Outcome::undecided;
         best.message = "no lattice was certified a packing at this p";
         return best;

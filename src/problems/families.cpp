@@ -67,6 +67,20 @@ I octahedral_crossover(const I& like) {
     return log(field.integer(3)) / log(field.integer(4));
 }
 
+// p > p*_o = ln3/ln4 for the exact p, decided on enclosures of ln3/ln4 at 64 to 4096 bits (p is
+// rational and p*_o is not, so a fine enough enclosure separates them). A p that not even 4096
+// bits separate from p*_o is refused with that reason.
+bool above_octahedral_crossover(const Rational& p) {
+    for (const long bits : {64L, 256L, 1024L, 4096L}) {
+        const BallField field{bits};
+        const Ball exact_p = field.rational(p), crossover = octahedral_crossover(exact_p);
+        if (certainly_less(crossover, exact_p)) return true;
+        if (certainly_less(exact_p, crossover)) return false;
+    }
+    throw InputError("p = " + decimal_or_fraction_text(p) +
+                     " is too close to p*_o = ln3/ln4 to decide p > p*_o with 4096 bits: refused for S6");
+}
+
 }  // namespace
 
 void require_in_domain(Family family, const Rational& p) {
@@ -88,14 +102,7 @@ void require_in_domain(Family family, const Rational& p) {
         case Family::O0: inside = p > half && p <= 1; break;
         case Family::O1: inside = p >= half; break;
         case Family::D14: inside = p >= half && p <= 1; break;
-        // p > p*_o = ln3/ln4 is decided on an enclosure: p is refused here when it lies
-        // certainly below (binary64), and enclose_family leaves it undecided when the field's
-        // enclosure cannot separate it from p*_o (next to p*_o).
-        case Family::S6: {
-            const DoubleField field;
-            inside = p < 1 && !certainly_less(field.rational(p), octahedral_crossover(field.integer(0)));
-            break;
-        }
+        case Family::S6: inside = p < 1 && above_octahedral_crossover(p); break;
     }
     if (!inside)
         throw InputError(std::string("p = ") + decimal_or_fraction_text(p) + " is outside the domain of " +
@@ -303,10 +310,6 @@ template <class I>
 FamilyLattice<I> enclose_s6(const I& p) {
     FamilyLattice<I> lattice{Family::S6};
     const auto field = field_of(p);
-    // Below p*_o (decided here at the field's precision, where binary64 in require_in_domain could
-    // not) p is outside the domain, as any p there is.
-    if (certainly_less(p, octahedral_crossover(p)))
-        throw InputError("p is below p*_o = ln3/ln4: outside the domain of S6 (" + family_domain_text(Family::S6) + ")");
     if (!certainly_less(octahedral_crossover(p), p)) {
         lattice.message = "p is not certainly above p*_o = ln3/ln4 at this precision, where S6 begins (try --digits 30)";
         return lattice;
