@@ -38,6 +38,16 @@ inline const nlohmann::json& d14_golden() {
     return data["d14"];
 }
 
+// S6's basis, multipliers and phi at five p (scripts/make_s6_golden.py, mpmath at 60 digits).
+inline const nlohmann::json& s6_golden() {
+    static const nlohmann::json data = [] {
+        std::ifstream file(std::string(SUPERPACK_TEST_DATA) + "/s6.json");
+        REQUIRE(file.good());
+        return nlohmann::json::parse(file);
+    }();
+    return data["s6"];
+}
+
 // The reference value from mpmath (50 digits) as a ball of radius 1e-48: the generator is
 // not rigorous, so a test asks for overlap with this ball, never for equality.
 inline Ball reference(const std::string& decimal) {

@@ -10,6 +10,7 @@
 
 #include "checker/equations.hpp"
 #include "checker/equations_audit.hpp"
+#include "checker/family_parameters.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/cert/audit_certificate.hpp"
 #include "tamper.hpp"
@@ -146,9 +147,11 @@ TEST_CASE("the checker's contact identities: the paper's contact vectors and not
     using superpack_checker::combination;
     using superpack_checker::contact_identity;
     using superpack_checker::family_forms;
+    // S6's forms are its KKT system's (the nine entries as symbols), not a paper's.
+    CHECK_THROWS_AS(family_forms("S6"), std::invalid_argument);
     for (Family family : superpack::all_families()) {
         INFO(superpack::to_string(family));
-        const auto forms = family_forms(superpack::to_string(family));
+        const auto forms = superpack_checker::lattice_forms(superpack::to_string(family));
         // Over a box of triples, the checker's identities (written from the paper as linear
         // forms) select exactly the producer's list (lattice.cpp, NOTES 5.4): two independent homes.
         std::set<superpack::Coefficients> identities;

@@ -121,7 +121,7 @@ TEMPLATE_TEST_CASE("D14 and O0 at p*_o are both the BCC lattice with seven conta
     CHECK(contains(pow_nonneg(field.integer(3), field.integer(1) / (two * p)), two));
 }
 
-TEST_CASE("report: D14 is the densest certified packing at p = 0.6, and no lattice at p = 0.8 (exit 0)") {
+TEST_CASE("report: D14 is the densest certified packing at p = 0.6, and no lattice at p = 0.8, where S6 is (exit 0)") {
     const std::string file = std::string(std::filesystem::temp_directory_path() / "superpack-test-d14-report.json");
     const std::string command = std::string(SUPERPACK_BINARY) + " report --p-values 0.6,0.8 --json --output " + file + " 2>/dev/null";
     FILE* pipe = popen(command.c_str(), "r");
@@ -135,6 +135,6 @@ TEST_CASE("report: D14 is the densest certified packing at p = 0.6, and no latti
     CHECK(document["rows"][0]["densest"] == "D14");
     CHECK(document["rows"][0]["families"]["D14"]["packing"]["verdict"] == "admissible");
     CHECK(document["rows"][0]["families"]["D14"]["packing"]["contacts"] == 14);
-    CHECK(document["rows"][1]["densest"] == "O0");
+    CHECK(document["rows"][1]["densest"] == "S6");  // superpack's six-pair family, denser than O0 (NOTES 4.2)
     CHECK(document["rows"][1]["families"]["D14"]["status"] == "no_lattice");
 }
