@@ -38,6 +38,9 @@ certify density-C0-p1.5-30digits density --family C0 --p 3/2 --digits 30
 certify density-O1-p0.5-minkowski-30digits density --family O1 --p 1/2 --digits 30
 # D14 (Dostert and Vallentin 2020) at p = 0.6: a packing with 14 contacts, denser than O1 there.
 certify density-D14-p0.6 density --family D14 --p 0.6
+# S6 (superpack's six-pair family, NOTES 4.2) at p = 0.9: the KKT point of Minkowski's six pairs,
+# a packing with 12 contacts, denser than O0 there.
+certify density-S6-p0.9 density --family S6 --p 0.9
 
 # Lattice checks of exact bases: Minkowski's octahedron lattice at p = 1/2 (a packing, 14
 # contacts), 2Z^3 at p = 3 (a packing, 6 contacts), and an overlapping basis at p = 2 (witness
@@ -82,7 +85,7 @@ certify audit-D14-p0.5-0.792482 audit --family D14 --output-directory "$scratch"
 # The densest lattices `superpack best` certifies (NOTES 11.8), each a local-optimum certificate
 # (NOTES 8.9: the critical lattice is admissible and a strict local minimiser of |det|): at
 # p = 0.6, the 14-neighbour lattice, where no lattice of Jiao et al. is a packing; at p = 2, C1;
-# at p = 0.9, a lattice denser than O0 (NOTES 9, "O0 is not the densest lattice on (p*_o, 1)").
+# at p = 0.9, S6, denser than O0 (NOTES 9, "O0 is not the densest lattice on (p*_o, 1)").
 certify best-p0.6 best --p 0.6
 certify best-p2 best --p 2
 certify best-p0.9 best --p 0.9

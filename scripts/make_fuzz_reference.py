@@ -6,7 +6,8 @@ judges a mutated interval without the checker:
   contains: the true values it must still enclose (mpmath, 50 digits; an exact value such as
             t = 1 as a short decimal), taken from the committed references in tests/data/
             (make_golden.py, make_crossover_reference.py, make_superdisk_golden.py,
-            make_superdisk_vertices.py, make_lattice_data.py) or computed here from the paper's
+            make_superdisk_vertices.py, make_lattice_data.py, make_d14_golden.py, make_s6_golden.py)
+            or computed here from the paper's
             equations (derivatives of s and c at p = 1, witness norms of the audits) or from the
             KKT system of a local optimum (its basis, multipliers and phi);
   covers:   a list of intervals (argmin_t) that must hold each given value;
@@ -40,7 +41,7 @@ def load(name):
 
 GOLDEN, CROSSOVER, SUPERDISK = load("golden.json"), load("crossover.json"), load("superdisk.json")
 VERTICES, LATTICE = load("superdisk_vertices.json"), load("lattice.json")
-D14 = load("d14.json")
+D14, S6 = load("d14.json"), load("s6.json")
 
 
 def text(x):
@@ -62,6 +63,8 @@ def as_mpf(q):
 def golden(family, p):
     if family == "D14":
         return d14_golden(p)
+    if family == "S6":
+        return s6_golden(p)
     for entry in GOLDEN["families"]:
         if entry["family"] == family and Fraction(entry["p"]) == p:
             return entry
@@ -78,6 +81,19 @@ def d14_golden(p):
             return {"volume": text(volume), "phi": entry["phi"],
                     "parameters": {name: entry[name] for name in ("x", "y", "z")}}
     raise KeyError(("D14", p))
+
+
+def s6_golden(p):
+    """S6 at p from tests/data/s6.json (make_s6_golden.py): the nine basis entries b00..b22, the six
+    multipliers mu1..mu6 and phi, with the volume of the superball (q = 2p) computed here."""
+    for entry in S6["s6"]:
+        if Fraction(entry["p"]) == p:
+            q = 2 * as_mpf(p)
+            volume = (2 * gamma(1 + 1 / q)) ** 3 / gamma(1 + 3 / q)
+            parameters = {"b%d%d" % (k, j): entry["basis"][k][j] for k in range(3) for j in range(3)}
+            parameters.update({"mu%d" % (i + 1): mu for i, mu in enumerate(entry["multipliers"])})
+            return {"volume": text(volume), "phi": entry["phi"], "parameters": parameters}
+    raise KeyError(("S6", p))
 
 
 def norm(v, p):
