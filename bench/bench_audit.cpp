@@ -55,6 +55,7 @@ int main() {
     const auto start = std::chrono::steady_clock::now();
     std::size_t pieces = 0, undecided = 0;
     for (Family family : all_families()) {
+        if (!unaudited_reason(family).empty()) continue;  // S6: not audited yet (NOTES.md 4.2)
         const AuditResult result = audit_family(family, claimed_audit_range(family), default_audit_settings(family));
         pieces += result.pieces.size();
         for (const AuditPiece& piece : result.pieces) undecided += piece.outcome == "undecided";
