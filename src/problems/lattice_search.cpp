@@ -155,6 +155,44 @@ double size_of(const std::vector<double>& r) {
 
 }  // namespace
 
+namespace {
+
+// Newton's method on the KKT system from x = (B, mu); the solution only when it converged with
+// positive multipliers and the active vectors still the shortest, no worse than the start b.
+std::optional<KktPoint> polish(const KktSystem& system, std::vector<double> x, const DoubleBasis& b) {
+    const std::size_t n = x.size();
+    const double p = system.p;
+    for (int iteration = 0; iteration < 40; ++iteration) {
+        const std::vector<double> r = system.residual(x);
+        if (size_of(r) < 1e-14) break;
+        DoubleMatrix jacobian(n);
+        for (std::size_t j = 0; j < n; ++j) {
+            const double h = 1e-7 * std::max(1.0, std::fabs(x[j]));
+            std::vector<double> up = x, down = x;
+            up[j] += h;
+            down[j] -= h;
+            const std::vector<double> r_up = system.residual(up), r_down = system.residual(down);
+            for (std::size_t i = 0; i < n; ++i) jacobian(i, j) = (r_up[i] - r_down[i]) / (2 * h);
+        }
+        const auto inverse = approximate_inverse(jacobian);
+        if (!inverse) return std::nullopt;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) x[i] -= (*inverse)(i, j) * r[j];
+    }
+    if (!(size_of(system.residual(x)) < 1e-12)) return std::nullopt;
+    for (std::size_t i = 9; i < n; ++i)
+        if (!(x[i] > 0)) return std::nullopt;
+    KktPoint point;
+    for (int k = 0; k < 9; ++k) point.basis[k / 3][k % 3] = x[k];
+    point.multipliers.assign(x.begin() + 9, x.end());
+    // The polished lattice must still have the active vectors as its shortest ones.
+    if (!(shortest_norm(point.basis, p) > 2 * (1 - 1e-12)) || !(objective(point.basis, p) <= objective(b, p) + 1e-12))
+        return std::nullopt;
+    return point;
+}
+
+}  // namespace
+
 std::optional<KktPoint> kkt_point(const DoubleBasis& b, double p, const std::vector<std::array<long, 3>>& active) {
     const std::size_t n = 9 + active.size();
     if (active.empty() || active.size() > 9) return std::nullopt;
@@ -184,33 +222,15 @@ std::optional<KktPoint> kkt_point(const DoubleBasis& b, double p, const std::vec
         for (std::size_t i = 0; i < active.size(); ++i)
             for (std::size_t j = 0; j < active.size(); ++j) x[9 + i] += (*inverse)(i, j) * right[j];
     }
-    for (int iteration = 0; iteration < 40; ++iteration) {
-        const std::vector<double> r = system.residual(x);
-        if (size_of(r) < 1e-14) break;
-        DoubleMatrix jacobian(n);
-        for (std::size_t j = 0; j < n; ++j) {
-            const double h = 1e-7 * std::max(1.0, std::fabs(x[j]));
-            std::vector<double> up = x, down = x;
-            up[j] += h;
-            down[j] -= h;
-            const std::vector<double> r_up = system.residual(up), r_down = system.residual(down);
-            for (std::size_t i = 0; i < n; ++i) jacobian(i, j) = (r_up[i] - r_down[i]) / (2 * h);
-        }
-        const auto inverse = approximate_inverse(jacobian);
-        if (!inverse) return std::nullopt;
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < n; ++j) x[i] -= (*inverse)(i, j) * r[j];
-    }
-    if (!(size_of(system.residual(x)) < 1e-12)) return std::nullopt;
-    for (std::size_t i = 0; i < active.size(); ++i)
-        if (!(x[9 + i] > 0)) return std::nullopt;
-    KktPoint point;
-    for (int k = 0; k < 9; ++k) point.basis[k / 3][k % 3] = x[k];
-    point.multipliers.assign(x.begin() + 9, x.end());
-    // The polished lattice must still have the active vectors as its shortest ones.
-    if (!(shortest_norm(point.basis, p) > 2 * (1 - 1e-12)) || !(objective(point.basis, p) <= objective(b, p) + 1e-12))
-        return std::nullopt;
-    return point;
+    return polish(system, x, b);
+}
+
+std::optional<KktPoint> kkt_point(const KktPoint& start, double p, const std::vector<std::array<long, 3>>& active) {
+    if (active.empty() || active.size() > 9 || start.multipliers.size() != active.size()) return std::nullopt;
+    std::vector<double> x;
+    for (const auto& row : start.basis) x.insert(x.end(), row.begin(), row.end());
+    x.insert(x.end(), start.multipliers.begin(), start.multipliers.end());
+    return polish(KktSystem{p, active}, x, start.basis);
 }
 
 namespace {

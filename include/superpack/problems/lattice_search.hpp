@@ -58,6 +58,8 @@ struct KktPoint {
     std::vector<double> multipliers;
 };
 std::optional<KktPoint> kkt_point(const DoubleBasis& b, double p, const std::vector<std::array<long, 3>>& active);
+// The same from a basis and multipliers (one per triple), e.g. the point at a nearby p.
+std::optional<KktPoint> kkt_point(const KktPoint& start, double p, const std::vector<std::array<long, 3>>& active);
 
 // The shortest 2p-norm over the lattice vectors c B with |c_i| <= 2, and the norm of one vector.
 double shortest_norm(const DoubleBasis& basis, double p);

@@ -21,8 +21,8 @@ const std::vector<Coefficients>& s6_contact_triples();
 // The seed's p, 9/10: where the stored guess of the KKT point lies.
 Rational s6_seed_p();
 
-// The KKT point at p in floating point, followed by Newton (kkt_point) from the seed at 9/10 in
-// steps of p of at most 1/400 (halved where Newton fails, down to 2^-24). A guess only. Nothing,
+// The KKT point at p in floating point, followed by Newton (kkt_point, from the basis and the
+// multipliers of the point before) from the seed at 9/10 in steps of p of at most 1/400 (halved where Newton fails, down to 2^-24). A guess only. Nothing,
 // with the reason in `failure`, when the continuation loses the point.
 std::optional<KktPoint> s6_guess(double p, std::string& failure);
 
