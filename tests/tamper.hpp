@@ -1,6 +1,7 @@
 // Tampering with certificates in tests: every exact bound of a document, and a single-digit
 // change that moves a bound inward. Shared by the certificate tests of every claim kind.
 #pragma once
+#include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -81,6 +82,16 @@ inline TamperedReplay replay_tampered(const nlohmann::json& original, const std:
     const std::string before = copy[nlohmann::json::json_pointer(pointer)].get<std::string>();
     const std::string after = tamper_bound(copy, pointer);
     return {superpack_checker::verify_document(copy), before, after};
+}
+
+// Replays `original` with the bound at `pointer` moved inward and checks that the checker rejects
+// it at a step of the proof: the assertion every certificate test makes for each bound it tampers.
+inline void check_tampered_bound_rejected(const nlohmann::json& original, const std::string& pointer) {
+    const TamperedReplay replay = replay_tampered(original, pointer);
+    INFO(pointer << ": " << replay.before << " -> " << replay.after << " (" << replay.report.path << ": "
+                 << replay.report.message << ")");
+    CHECK(replay.report.verdict == superpack_checker::Verdict::invalid);
+    CHECK(proof_step(replay.report.path));
 }
 
 // The step at which the checker rejects `document`, or "(not rejected: <verdict>)": one
