@@ -74,12 +74,10 @@ int run(const AuditOptions& options, bool default_directory) {
     if (families.size() == 1 && !unaudited_reason(families[0]).empty())
         throw Failure(exit_undecided, "audit: " + unaudited_reason(families[0]));
     // The default audit lists a family without an audit as a skipped row with its reason.
-    std::vector<Family> skipped;
-    for (Family family : families)
-        if (!unaudited_reason(family).empty()) skipped.push_back(family);
-    families.erase(std::remove_if(families.begin(), families.end(),
-                                  [](Family family) { return !unaudited_reason(family).empty(); }),
-                   families.end());
+    const auto unaudited = std::stable_partition(families.begin(), families.end(),
+                                                 [](Family family) { return unaudited_reason(family).empty(); });
+    const std::vector<Family> skipped(unaudited, families.end());
+    families.erase(unaudited, families.end());
     if (options.second_root && (families.size() != 1 || families[0] != Family::O1))
         throw Failure(exit_usage, "--second-root needs --family O1");
     if (!options.certificate.empty() && (families.size() != 1 || options.second_root))
