@@ -16,16 +16,23 @@
 //               breaks the chain: no later O1 piece can be decided.
 //   D14:        the same continuation for the equations of Dostert and Vallentin (2020) in
 //               (x, y, z), from the exact root (1/3, 1/6, 1/2) at p = 1/2.
+//   S6:         the same for the KKT system of the six triples, from the point proof at
+//               p = 9/10 (proof.anchor) up and down, each box replayed with the mean-value
+//               form in p about its stored midpoint p0 (s6_chain.hpp).
 // then the verdict with the checker's own enumeration (family_verdict.hpp).
 //
 // Keys read: claim.data {family, lattice ("published"), range {lo, hi}, pieces [{p {lo, hi},
 // verdict, contacts, contact_vectors | witness | at, witness}]}; inputs {family, range};
-// proof {kind, pieces [{parameters, lattice}]} (both null where nothing is proved).
+// proof {kind, pieces [{parameters, lattice}]} (both null where nothing is proved); S6 also
+// claim.data.contact_pairs and proof.anchor (a Krawczyk leaf at p = 9/10).
 #include <optional>
 
 #include "checker/family_verdict.hpp"
 #include "checker/literature.hpp"
 #include "checker/render.hpp"
+#include "checker/equations_kkt.hpp"
+#include "checker/family_parameters.hpp"
+#include "checker/s6_chain.hpp"
 
 namespace superpack_checker {
 
@@ -146,9 +153,8 @@ std::string check_audit(const Json& claim, Context& context) {
     const Json& proof = context.member(document, "proof", "");
     const mpfr_prec_t precision = context.precision();
     const std::string family = read_family(context, data, inputs);
-    // S6 is defined point by point (its KKT point continued from p = 9/10); no audit of it over
-    // pieces of p, with its chain of boxes, is written yet (NOTES.md 4.2).
-    context.require(family != "S6", "claim.data.family", "S6 has no audit claim: it is certified at single p only");
+    check_family_definition(context, family, data);
+    const bool s6 = family == "S6";
     const Piece range = read_piece_range(context, context.member(data, "range", "claim.data"), "claim.data.range");
     const Piece input_range = read_piece_range(context, context.member(inputs, "range", "inputs"), "inputs.range");
     context.require(input_range.lo == range.lo && input_range.hi == range.hi, "inputs.range",
@@ -162,7 +168,17 @@ std::string check_audit(const Json& claim, Context& context) {
     if (!pieces.is_array() || !proofs.is_array()) context.malformed("claim.data.pieces", "expected arrays of pieces");
     context.require(!pieces.empty(), "claim.data.pieces", "no pieces");
     context.require(proofs.size() == pieces.size(), "proof.pieces", "one proof per piece of the claim is needed");
-    const FamilyForms forms = family_forms(family);
+    const FamilyForms forms = lattice_forms(family);
+    std::vector<std::optional<Box>> s6_roots;
+    if (s6) {
+        std::vector<PieceEnds> ends;
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            const std::string claim_path = "claim.data.pieces[" + std::to_string(k) + "]";
+            const Piece piece = read_piece_range(context, context.member(pieces[k], "p", claim_path), claim_path + ".p");
+            ends.push_back({piece.lo, piece.hi});
+        }
+        s6_roots = replay_s6_chain(context, ends, proofs, context.member(proof, "anchor", "proof"));
+    }
 
     Chain chain;
     std::vector<MergedRange> merged;
@@ -194,11 +210,18 @@ std::string check_audit(const Json& claim, Context& context) {
             merge(merged, piece, "undecided");
             // Nothing is proved here: no lattice proof (O1, D14 keep their box for the chain, below).
             if (!lattice.is_null()) context.malformed(proof_path + ".lattice", "an undecided piece proves nothing: expected null");
-            if (!continued(family) && !parameters.is_null())
+            if (!continued(family) && !s6 && !parameters.is_null())
                 context.malformed(parameters_path, "an undecided piece proves nothing: expected null");
         }
         NamedReals symbols;
-        if (continued(family)) {
+        if (s6) {
+            if (!decided) continue;
+            context.require(!at_point, claim_path + ".verdict", "S6 pieces are decided for every p of the piece or not at all");
+            context.require(s6_roots[k].has_value(), parameters_path,
+                            "the S6 branch through the point proof at p = 9/10 is not followed onto this piece");
+            const std::vector<std::string> names = kkt_symbols();
+            for (std::size_t i = 0; i < names.size(); ++i) symbols.push_back({names[i], (*s6_roots[k])[i]});
+        } else if (continued(family)) {
             const auto replayed = replay_continued_piece(context, family, parameters, parameters_path, piece, p, chain, k == 0);
             if (!decided) continue;
             context.require(replayed.has_value(), parameters_path,
@@ -233,13 +256,21 @@ std::string check_audit(const Json& claim, Context& context) {
         : family == "D14" ? std::string("the D14 lattice of ") + dostert_vallentin_citation +
                                 " (Theorem 4.2, their exponent 2p: basis 2(-x, y, z), 2(z, -x, y), 2(y, z, -x), (x, y, z) on the "
                                 "root branch of their three equations through Minkowski's (1/3, 1/6, 1/2) at p = 1/2)"
-                          : lattice_words(family);
+        : s6 ? "the S6 lattice (superpack's own family, NOTES.md 4.2; not a published one): the basis B of the KKT point of "
+               "min det B subject to ||c B||_(2p) = 2 for Minkowski's six pairs (configuration A3) c = (1,0,0), (0,1,0), "
+               "(0,0,1), (0,1,-1), (1,0,-1), (1,-1,0), on the branch through the KKT point at p = 9/10 that is unique in "
+               "the box of proof.anchor"
+             : lattice_words(family);
     std::string text = "For every p in each piece [lo, hi] of claim.data.pieces (exact rational ends; the pieces cover [" +
                        rational_words(range.lo) + ", " + rational_words(range.hi) + "] without gaps), " + lattice_text +
                        " has the verdict stated for the piece: a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1 "
                        "with the stated contacts, or not a packing (the witness vector has 2p-norm < 2). A piece marked "
                        "overlapping_at_point is not a packing at the one point p = at of the piece (witness) and proves "
                        "nothing about its other p. Pieces marked undecided prove nothing.";
+    if (s6)
+        text += " The branch is followed from p = 9/10 up and down: per piece a Krawczyk box holding exactly one KKT point "
+                "for every p of the piece (mean-value form in p), each holding at its end nearer 9/10 the root of the box "
+                "before; a piece without a box breaks the chain on its side.";
     if (continued(family))
         text += " The branch is followed by continuation: a Krawczyk box per piece, each holding the root of the next "
                 "piece at their shared end; a piece without a box breaks the chain.";

@@ -109,6 +109,34 @@ std::vector<std::vector<Real>> KktEquations::jacobian(const Box& x) const {
     return jac;
 }
 
+std::vector<Real> KktEquations::p_derivative(const Box& x) const {
+    const mpfr_prec_t precision = p.precision();
+    const Real one = integer(1, precision), two = integer(2, precision), two_p = two * p;
+    std::vector<Real> df(9 + contacts.size(), Real(precision));
+    for (Real& entry : df) entry = integer(0, precision);
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        const Triple& c = contacts[i];
+        const ContactTerms t = contact_terms(x, c, p, false);
+        std::array<Real, 3> logs{Real(precision), Real(precision), Real(precision)};
+        Real l = integer(0, precision);
+        for (int j = 0; j < 3; ++j) {
+            if (!excludes_zero(t.u[j]))
+                throw UnboundedPower("ln|u| with u in " + text(t.u[j]) + ", which may be 0, in the derivative in p");
+            logs[j] = log(abs(t.u[j]));
+            l = l + pow_abs(t.u[j], two_p) * logs[j];
+        }
+        const Real& mu = x[9 + i];
+        for (int k = 0; k < 3; ++k)
+            if (c[k] != 0)
+                for (int j = 0; j < 3; ++j) {
+                    const Real dg = t.g[j] * (two * logs[j] - (two_p - one) * l / p);
+                    df[3 * k + j] = df[3 * k + j] - c[k] * (mu * dg);
+                }
+        df[9 + i] = t.n * l / p;
+    }
+    return df;
+}
+
 System kkt_system(const KktEquations& equations) {
     return {[equations](const Box& x) { return equations.value(x); },
             [equations](const Box& x) { return equations.jacobian(x); }};

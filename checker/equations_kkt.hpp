@@ -30,6 +30,12 @@ struct KktEquations {
     // (9 + m) x (9 + m); rows and columns in the order of x. Rows 0..8, columns 0..8 are the
     // Hessian of the Lagrangian in B; rows 9.. columns 0..8 the constraint Jacobian A.
     std::vector<std::vector<Real>> jacobian(const Box& x) const;
+    // dF/dp at fixed x, by hand: with L_i = sum_j |u_ij|^(2p) ln|u_ij| (from sum_j |u_ij|^(2p) = 1),
+    //   dn_i/dp = n_i L_i / p,   dg_ij/dp = g_ij (2 ln|u_ij| - (2p - 1) L_i / p),
+    //   dF_(3k+j)/dp = -sum_i mu_i c_ik dg_ij/dp,   dF_(9+i)/dp = dn_i/dp.
+    // ln|u| needs every contact coordinate certainly away from 0; else UnboundedPower (S6's
+    // coordinates are, and a zero one would make the Jacobian unbounded for p < 1 anyway).
+    std::vector<Real> p_derivative(const Box& x) const;
 };
 
 System kkt_system(const KktEquations& equations);

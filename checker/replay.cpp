@@ -54,7 +54,7 @@ Width total_width(const Box& box) {
 
 }  // namespace
 
-KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_iterations) {
+KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_iterations, const ParameterForm* parameter) {
     const std::size_t n = box.size();
     const mpfr_prec_t precision = box[0].precision();
     KrawczykReplay result;
@@ -82,17 +82,21 @@ KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_ite
             center.push_back(midpoint(x));
             offset.push_back(x - center.back());
         }
-        const std::vector<Real> at_center = system.value(center);
+        const std::vector<Real> at_center = parameter ? parameter->value_at_p0(center) : system.value(center);
+        const std::vector<Real> slope = parameter ? parameter->derivative(center) : std::vector<Real>();
         Box next;
         bool interior = true;
         for (std::size_t i = 0; i < n; ++i) {
             Real k = center[i];
+            Real drift = integer(0, precision);  // (C F_p(m, P))_i
             for (std::size_t j = 0; j < n; ++j) {
                 k = k - exact_double(inverse[i][j], precision) * at_center[j];
+                if (parameter) drift = drift + exact_double(inverse[i][j], precision) * slope[j];
                 Real entry = integer(i == j ? 1 : 0, precision);
                 for (std::size_t l = 0; l < n; ++l) entry = entry - exact_double(inverse[i][l], precision) * jacobian[l][j];
                 k = k + entry * offset[j];
             }
+            if (parameter) k = k - drift * parameter->offset;
             interior = interior && interior_subset(k, current[i]);
             Real meet(precision);
             if (!intersect(meet, k, current[i])) {

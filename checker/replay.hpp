@@ -26,11 +26,23 @@ struct KrawczykReplay {
     std::string reason;
 };
 
+// For F(x, p) with p in an interval P: the mean-value form F(m, p) in F(m, p0) + F_p(m, P) (p - p0),
+// preconditioned term by term, C F(m, p0) + (C F_p(m, P)) (P - p0). C F(m, P) itself is sound but
+// wide by |C| |F_p| |P - p0|, which on an ill-conditioned system (S6's KKT point) is far wider
+// than |C F_p| |P - p0|: the cancellation happens inside C F_p (NOTES.md 4.2).
+struct ParameterForm {
+    std::function<std::vector<Real>(const Box&)> value_at_p0;  // F(x, p0), p0 in P
+    std::function<std::vector<Real>(const Box&)> derivative;   // dF/dp (x, P)
+    Real offset;                                                // P - p0
+};
+
 // K(X) = m - C F(m) + (I - C J(X)) (X - m) with C a floating-point inverse of the midpoint
 // Jacobian (any C is sound), iterating X <- K(X) ∩ X: every root in the box stays in X.
 // K(X) ∩ X empty proves no root; K(X) in int X proves exactly one (then iterated until it
 // stops shrinking, to give a tight root box).
-KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_iterations);
+// With `parameter`, C F(m) is its mean-value form: then a unique root for every p of P.
+KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_iterations,
+                               const ParameterForm* parameter = nullptr);
 
 // Interval Newton for f: R -> R from a stored box X and point M in X: checks 0 not in f'(X)
 // and N(X) = M - f(M)/f'(X) in int X, or in the interior of a later iterate X_k = N(X_(k-1)) ∩

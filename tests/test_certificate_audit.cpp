@@ -142,7 +142,7 @@ TEST_CASE("the checker's contact identities: the paper's contact vectors and not
     using superpack_checker::combination;
     using superpack_checker::contact_identity;
     using superpack_checker::family_forms;
-    // S6's forms are its KKT system's (the nine entries as symbols), not a paper's.
+    // S6's forms are its KKT system's (the nine entries as symbols, lattice_forms), not a paper's.
     CHECK_THROWS_AS(family_forms("S6"), std::invalid_argument);
     for (Family family : superpack::all_families()) {
         INFO(superpack::to_string(family));
@@ -365,4 +365,45 @@ TEST_CASE("audit and check-lattice --family --certificate on the command line") 
     REQUIRE(exit_status("check-lattice --family O1 --p 0.6 --digits 30 --certificate " + lattice) == 0);
     CHECK(exit_status("verify " + lattice) == 0);
     std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("S6 audit: the mean-value Krawczyk chain from 9/10 verifies; a shifted box, a gap, a range outside the domain, "
+          "a broken chain and a wrong packing claim are rejected") {
+    // 8 pieces of 1/8000: [0.8995, 0.9] walked down (pieces 0..3), [0.9, 0.9005] up (4..7).
+    const Document s6 = audit(Family::S6, "8995/10000", "9005/10000", 8, 0);
+    REQUIRE(s6["claim"]["data"]["pieces"].size() == 8);
+    REQUIRE(verify_document(s6).verdict == Verdict::valid);
+    CHECK(superpack::decided_pieces(s6) == 8);
+    Document shifted = s6;
+    shifted["proof"]["pieces"][5]["parameters"]["box"][0] = Document{{"lo", "31*2^-4"}, {"hi", "125*2^-6"}};  // [1.9375, 1.953125], b00 is 1.9206...
+    CHECK(verify_document(shifted).path == "proof.pieces[5].parameters");
+    Document gap = s6;
+    gap["claim"]["data"]["pieces"].erase(6);
+    gap["proof"]["pieces"].erase(6);
+    CHECK(verify_document(gap).path == "claim.data.pieces[6].p");
+    Document outside = s6;
+    outside["claim"]["data"]["range"]["lo"] = outside["inputs"]["range"]["lo"] = "79/100";
+    outside["claim"]["data"]["pieces"][0]["p"]["lo"] = "79/100";
+    CHECK(verify_document(outside).path == "inputs.range");
+    // A box dropped below 9/10: that piece and every piece further down lose the chain, and
+    // their packing claims are rejected (the first of them in order, piece 0, is named).
+    Document broken = s6;
+    broken["proof"]["pieces"][2]["parameters"] = nullptr;
+    CHECK(verify_document(broken).path == "proof.pieces[0].parameters");
+    broken["claim"]["data"]["pieces"][0] = Document{{"p", s6["claim"]["data"]["pieces"][0]["p"]}, {"verdict", "undecided"}};
+    broken["claim"]["data"]["pieces"][1] = Document{{"p", s6["claim"]["data"]["pieces"][1]["p"]}, {"verdict", "undecided"}};
+    broken["proof"]["pieces"][0] = broken["proof"]["pieces"][1] = Document{{"parameters", nullptr}, {"lattice", nullptr}};
+    CHECK(verify_document(broken).path == "proof.pieces[2].parameters");
+    // The anchor moved off the point at 9/10: the first link fails, so no piece is on the chain.
+    Document unanchored = s6;
+    unanchored["proof"].erase("anchor");
+    CHECK(verify_document(unanchored).path == "proof");
+    Document contacts = s6;
+    contacts["claim"]["data"]["pieces"][4]["contacts"] = 14;
+    CHECK(verify_document(contacts).path == "claim.data.pieces[4].contacts");
+    // A packing claimed over a piece moved past the piece the box was proved for.
+    Document moved = s6;
+    moved["claim"]["data"]["pieces"][7]["p"]["hi"] = moved["claim"]["data"]["range"]["hi"] =
+        moved["inputs"]["range"]["hi"] = "91/100";
+    CHECK(verify_document(moved).path.rfind("proof.pieces[7].parameters", 0) == 0);
 }

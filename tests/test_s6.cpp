@@ -82,7 +82,7 @@ TEST_CASE("best at p = 9/10 names S6: the search lattice coincides with it and i
     CHECK(best.local->verdict == Outcome::proved);
 }
 
-TEST_CASE("S6 on the command line: outside ln3/ln4 < p < 1 exit 2, next to p*_o exit 4, no audit yet exit 4") {
+TEST_CASE("S6 on the command line: outside ln3/ln4 < p < 1 exit 2, next to p*_o exit 4, an audit range must hold 9/10") {
     struct Case {
         const char* arguments;
         int status;
@@ -97,7 +97,8 @@ TEST_CASE("S6 on the command line: outside ln3/ln4 < p < 1 exit 2, next to p*_o 
         {"density --family S6 --p 0.792481250360578", 2, "outside the domain of S6"},
         // Above p*_o by 1e-17: binary64 cannot separate p from its enclosure of ln3/ln4.
         {"density --family S6 --p 0.79248125036057811", 4, "not certainly above p*_o"},
-        {"audit --family S6", 4, "S6 is not audited yet"},
+        {"audit --family S6 --p-range 0.95:0.99", 2, "must hold p = 9/10"},
+        {"audit --family S6 --p-range 0.79:0.9", 2, "outside the domain of S6"},
         {"density --family S6 --p 0.9", 0, ""},
     };
     for (const Case& c : cases) {

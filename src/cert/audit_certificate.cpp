@@ -7,6 +7,7 @@
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/certificate_partition.hpp"
 #include "superpack/cert/family_certificate.hpp"
+#include "superpack/problems/s6_branch.hpp"
 
 namespace superpack {
 
@@ -63,6 +64,7 @@ Json audit_certificate(const AuditResult& result) {
     if (continued && result.range.lo != Rational(1, 2))
         throw InputError(std::string(family == Family::O1 ? "an " : "a ") + to_string(family) +
                          " audit certificate starts at p = 1/2 (the branch is followed from Minkowski's lattice)");
+    const bool s6 = family == Family::S6;
     const DoubleField field;
     Json pieces = Json::array(), proofs = Json::array();
     bool linked = true;  // O1, D14: the continuation from p = 1/2 is unbroken up to this piece
@@ -73,7 +75,17 @@ Json audit_certificate(const AuditResult& result) {
         const bool certified = piece.lattice && piece.lattice->status == Outcome::proved;
         bool decided = certified && piece.check && piece.check->verdict != Outcome::undecided;
         const bool linked_before = linked;
-        if (continued) {
+        if (s6) {
+            // The producer certifies only pieces on the chain from 9/10 (audit.cpp); the box is
+            // proved about the piece's midpoint p0 (s6_piece).
+            if (certified) {
+                Rational p0 = (piece.lo + piece.hi) / 2;
+                p0.canonicalize();
+                const auto& search = piece.lattice->search.back();
+                parameters = Json{{"kind", "krawczyk"}, {"status", "unique"}, {"p0", rational_text(p0)},
+                                  {"box", box_json(search.piece)}, {"root", box_json(search.root)}};
+            }
+        } else if (continued) {
             if (certified)
                 parameters = Json{{"kind", "krawczyk"}, {"status", "unique"}, {"box", box_json(piece.lattice->search.back().piece)}};
             // A piece after a break in the continuation from p = 1/2 cannot be decided.
@@ -99,11 +111,18 @@ Json audit_certificate(const AuditResult& result) {
         proofs.push_back(Json{{"parameters", parameters}, {"lattice", lattice}});
     }
     const Json range{{"lo", rational_text(result.range.lo)}, {"hi", rational_text(result.range.hi)}};
-    Json claim{{"kind", "audit"},
-               {"data", Json{{"family", to_string(family)}, {"lattice", "published"}, {"range", range}, {"pieces", pieces}}}};
+    Json data{{"family", to_string(family)}, {"lattice", "published"}, {"range", range}, {"pieces", pieces}};
+    data.update(family_definition_json(family));
+    Json claim{{"kind", "audit"}, {"data", data}};
     if (decided_pieces(claim["data"]) == 0) throw std::runtime_error("certificate: no piece of the audit is decided");
     Json inputs{{"family", to_string(family)}, {"range", range}};
     Json proof{{"kind", "audit"}, {"pieces", proofs}};
+    if (s6) {
+        std::string failure;
+        const std::optional<S6Branch> anchor = s6_anchor(failure);
+        if (!anchor) throw std::runtime_error("certificate: " + failure);
+        proof["anchor"] = Json{{"kind", "krawczyk"}, {"status", "unique"}, {"box", box_json(anchor->box)}, {"root", box_json(anchor->root)}};
+    }
     return certificate_document(certificate_head("audit", field, 15), claim, inputs, proof);
 }
 

@@ -4,6 +4,9 @@
 #include <functional>
 #include <sstream>
 
+#include "superpack/problems/s6.hpp"
+#include "superpack/problems/s6_branch.hpp"
+
 namespace superpack {
 
 namespace {
@@ -11,6 +14,8 @@ namespace {
 // p*_o = ln 3 / ln 4 lies in (792481/10^6, 792482/10^6); checked in interval arithmetic on use.
 const Rational crossover_below(792481, 1000000);
 const Rational crossover_above(792482, 1000000);
+// S6's default range (claimed_audit_range); it must hold 9/10, where the chain is anchored.
+const std::pair<Rational, Rational> s6_default_range{Rational(89, 100), Rational(91, 100)};
 
 void require_crossover_bracket() {
     const DoubleField field;
@@ -51,6 +56,10 @@ struct BranchTracker {
     // D14: the box of the previous piece, whose root at the shared end the next box must hold
     // (the link the checker requires; near p*_o a wider box could catch the mirror root).
     std::optional<std::vector<DInterval>> previous;
+    // S6: the branch from the point proof at p = 9/10, and the direction of the walk (down: each
+    // piece is linked at its upper end).
+    std::optional<S6Branch> s6;
+    bool downward = false;
 };
 
 template <class F>
@@ -82,7 +91,30 @@ bool linked_to_previous(const BranchTracker& tracker, const std::vector<DInterva
     return true;
 }
 
-FamilyLattice<DInterval> track_branch(Family family, BranchTracker& tracker, const DInterval& p, const Rational& lo) {
+// S6: the mean-value Krawczyk box of the piece, linked to the box before it (s6_branch.hpp).
+FamilyLattice<DInterval> track_s6(BranchTracker& tracker, const Rational& lo, const Rational& hi) {
+    FamilyLattice<DInterval> lattice{Family::S6};
+    const S6Piece piece = s6_piece(*tracker.s6, lo, hi, tracker.downward ? hi : lo);
+    if (piece.status != RootStatus::unique) {
+        lattice.message = piece.reason;
+        return lattice;
+    }
+    lattice.search.push_back({piece.box, RootStatus::unique, piece.root, piece.reason});
+    for (int k = 0; k < 9; ++k)
+        lattice.parameters.push_back({"b" + std::to_string(k / 3) + std::to_string(k % 3), piece.root[static_cast<std::size_t>(k)]});
+    for (std::size_t i = 9; i < piece.root.size(); ++i) lattice.parameters.push_back({"mu" + std::to_string(i - 8), piece.root[i]});
+    lattice.branches.push_back({lattice.parameters, lattice.search.back()});
+    const std::vector<DInterval>& x = piece.root;
+    lattice.basis = Basis<DInterval>{{{x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}}};
+    lattice.status = Outcome::proved;
+    lattice.message = "KKT point followed from the point proof at p = 9/10; Krawczyk (mean-value form in p): unique in the "
+                      "box for every p of the piece; midpoint p0 = " + rational_text(piece.p0);
+    return lattice;
+}
+
+FamilyLattice<DInterval> track_branch(Family family, BranchTracker& tracker, const DInterval& p, const Rational& lo,
+                                      const Rational& hi) {
+    if (family == Family::S6) return track_s6(tracker, lo, hi);
     FamilyLattice<DInterval> lattice{family};
     const bool o1 = family == Family::O1;
     const std::string equations_name = o1 ? "Eq. (12)" : "the D14 equations";
@@ -123,7 +155,7 @@ AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
     piece.lo = lo;
     piece.hi = hi;
     const DInterval p = piece_interval(lo, hi);
-    const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_branch(family, *tracker, p, lo) : enclose_family_at(family, p);
+    const FamilyLattice<DInterval> lattice = tracker != nullptr ? track_branch(family, *tracker, p, lo, hi) : enclose_family_at(family, p);
     piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
     piece.detail["family_status"] = lattice.status == Outcome::proved ? "certified"
                                     : lattice.status == Outcome::refuted ? "no_lattice"
@@ -174,17 +206,15 @@ AuditRange claimed_audit_range(Family family) {
         case Family::D14:
             return {Rational(1, 2), crossover_above, {crossover_below},
                     "Dostert and Vallentin prove (1/2, 0.79] and conjecture [1/2, p*_o]; " + bracket};
-        case Family::S6: return {crossover_above, Rational(1), {}, unaudited_reason(family)};
+        case Family::S6:
+            return {s6_default_range.first, s6_default_range.second, {},
+                    "S6 is defined on (p*_o, 1); the default audits a range about the point proof at p = 9/10 that runs in "
+                    "seconds (audit --family S6 --p-range a:b for others; NOTES.md 4.2)"};
     }
     return {};
 }
 
-std::string unaudited_reason(Family family) {
-    if (family != Family::S6) return "";
-    return "S6 is not audited yet: it is certified at single p (density, check-lattice); an audit over pieces of p "
-           "(Krawczyk on the KKT system with p an interval, continued from the point proof at p = 9/10) is not written "
-           "(NOTES.md 4.2)";
-}
+std::string unaudited_reason(Family) { return ""; }
 
 AuditSettings default_audit_settings(Family family) {
     // O1's root search (two unknowns) costs grow fast with the width of p: keep pieces ~7e-4 and do not
@@ -193,6 +223,8 @@ AuditSettings default_audit_settings(Family family) {
     // D14 follows its root by continuation (a small Krawczyk box per piece, no search), so the
     // pieces may be wide; they only shrink where the root nears the fold at p*_o.
     if (family == Family::D14) return {32, 12};
+    // S6: the mean-value Krawczyk proves pieces 1.25e-4 wide near 9/10, not 2.5e-4 (NOTES.md 4.2).
+    if (family == Family::S6) return {160, 8};
     return {16, 12};
 }
 
@@ -203,7 +235,16 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     if (!(range.lo < range.hi)) throw InputError("empty p range");
     if (!unaudited_reason(family).empty()) throw InputError(unaudited_reason(family));
     AuditResult result{family, branch, range, {}};
+    const Rational anchor = s6_seed_p();
+    if (family == Family::S6) {
+        // Sound but stricter than p*_o < p < 1: the rational ends are compared exactly.
+        if (range.lo < crossover_above || !(range.hi < Rational(1)))
+            throw InputError("an S6 audit range must lie in [792482/10^6, 1) (S6 is defined on (p*_o, 1))");
+        if (range.lo > anchor || range.hi < anchor)
+            throw InputError("an S6 audit range must hold p = 9/10, where the branch is anchored by its point proof");
+    }
     std::vector<Rational> ends{range.lo};
+    if (family == Family::S6 && range.lo < anchor && anchor < range.hi) ends.push_back(anchor);
     for (const Rational& b : range.breaks)
         if (b > range.lo && b < range.hi) ends.push_back(b);
     ends.push_back(range.hi);
@@ -211,9 +252,9 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     const Rational total = range.hi - range.lo;
     std::optional<BranchTracker> tracker;
     if (family == Family::O1 || family == Family::D14) {
-        if (family == Family::D14) tracker = BranchTracker{{1.0 / 3, 1.0 / 6, 1.0 / 2}, std::nullopt};
-        else if (branch == AuditBranch::published) tracker = BranchTracker{{1.0 / 6, 2.0 / 3}, std::nullopt};
-        else tracker = BranchTracker{{5.0 / 12, 1.0 / 6}, std::nullopt};
+        if (family == Family::D14) tracker = BranchTracker{{1.0 / 3, 1.0 / 6, 1.0 / 2}, std::nullopt, std::nullopt, false};
+        else if (branch == AuditBranch::published) tracker = BranchTracker{{1.0 / 6, 2.0 / 3}, std::nullopt, std::nullopt, false};
+        else tracker = BranchTracker{{5.0 / 12, 1.0 / 6}, std::nullopt, std::nullopt, false};
         if (range.lo != Rational(1, 2)) {
             // Start the continuation from the complete root search at the exact left end (D14:
             // its branch root comes first).
@@ -226,6 +267,13 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
             for (const auto& unknown : start.branches[index].unknowns) tracker->root.push_back(mid_double(unknown.value));
         }
     }
+    if (family == Family::S6) {
+        std::string failure;
+        const std::optional<S6Branch> start = s6_anchor(failure);
+        if (!start) throw std::runtime_error("S6: no point proof at p = 9/10 to anchor the audit: " + failure);
+        tracker = BranchTracker{{}, std::nullopt, start, false};
+    }
+    const std::optional<BranchTracker> anchored = tracker;
     std::vector<long> counts;
     for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
         const Rational share = (ends[k + 1] - ends[k]) / total * settings.initial_pieces;
@@ -254,7 +302,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
             AuditPiece piece;
             piece.lo = lo;
             piece.hi = hi;
-            piece.reason = "not audited: the continuation of the branch from p = 1/2 broke before this piece";
+            piece.reason = std::string("not audited: the continuation of the branch from ") + (family == Family::S6 ? "p = 9/10" : "p = 1/2") + " broke before this piece";
             piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
             piece.detail["family_status"] = "undecided";
             progress_line(lo, hi, piece.outcome);
@@ -269,17 +317,25 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
             ++planned;
             Rational middle = (lo + hi) / 2;
             middle.canonicalize();
-            audit(lo, middle, depth + 1);
-            audit(middle, hi, depth + 1);
+            // S6 below 9/10 walks down: the upper half first, linked to the box before.
+            const bool downward = tracker && tracker->downward;
+            audit(downward ? middle : lo, downward ? hi : middle, depth + 1);
+            audit(downward ? lo : middle, downward ? middle : hi, depth + 1);
             return;
         }
         if (!settled) {
-            chain_broken = family == Family::D14;
+            chain_broken = family == Family::D14 || family == Family::S6;
             piece.reason += budget ? " (subdivision floor reached)"
                                    : " (piece limit " + std::to_string(settings.max_pieces) + " reached)";
-            // A refutation at one exact p of the piece is still certified: try the midpoint.
+            // A refutation at one exact p of the piece is still certified: try the midpoint
+            // (not for S6, whose lattice is a packing wherever its point exists).
             Rational middle = (lo + hi) / 2;
             middle.canonicalize();
+            if (family == Family::S6) {
+                progress_line(lo, hi, piece.outcome);
+                result.pieces.push_back(std::move(piece));
+                return;
+            }
             BranchTracker copy = tracker ? *tracker : BranchTracker{};
             copy.previous.reset();  // the midpoint is no end of the previous piece
             const AuditPiece point = audit_piece(family, middle, middle, tracker ? &copy : nullptr);
@@ -293,15 +349,30 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
         progress_line(lo, hi, piece.outcome);
         result.pieces.push_back(std::move(piece));
     };
-    for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
+    auto segment = [&](std::size_t k, bool downward) {
         const long count = counts[k];
-        for (long i = 0; i < count; ++i) {
+        for (long j = 0; j < count; ++j) {
+            const long i = downward ? count - 1 - j : j;
             Rational lo = ends[k] + (ends[k + 1] - ends[k]) * i / count, hi = ends[k] + (ends[k + 1] - ends[k]) * (i + 1) / count;
             lo.canonicalize();
             hi.canonicalize();
             audit(lo, hi, 0);
         }
+    };
+    if (family != Family::S6) {
+        for (std::size_t k = 0; k + 1 < ends.size(); ++k) segment(k, false);
+        return result;
     }
+    // S6: up from 9/10, then down from 9/10 again (the anchor's box, an unbroken chain).
+    for (std::size_t k = 0; k + 1 < ends.size(); ++k)
+        if (ends[k] >= anchor) segment(k, false);
+    tracker = anchored;
+    tracker->downward = true;
+    chain_broken = false;
+    for (std::size_t k = ends.size() - 1; k-- > 0;)
+        if (ends[k + 1] <= anchor) segment(k, true);
+    std::sort(result.pieces.begin(), result.pieces.end(),
+              [](const AuditPiece& a, const AuditPiece& b) { return a.lo < b.lo; });
     return result;
 }
 

@@ -21,6 +21,16 @@ Jet<I> signed_power(const Jet<I>& u, const I& e) {
     return {pow_signed(u.value, e), e * pow_abs(u.value, e - field_of(e).integer(1)) * u.derivative};
 }
 
+// Both varying (the derivative in p of the KKT system, whose exponent is 2p - 1): the term
+// sign(u) |u|^e log|u| de is added only when de is not exactly 0, as in pow_abs (jet.hpp).
+template <class I>
+Jet<I> signed_power(const Jet<I>& u, const Jet<I>& e) {
+    Jet<I> result = signed_power(u, e.value);
+    if (!(contains_zero(e.derivative) && width_upper(e.derivative) == 0.0))
+        result.derivative = result.derivative + result.value * log(abs(u.value)) * e.derivative;
+    return result;
+}
+
 }  // namespace
 
 template <class T, class P>
@@ -205,6 +215,8 @@ template std::vector<Ball> kkt_equations(const std::vector<Ball>&, const std::ve
 template std::vector<Jet<DInterval>> kkt_equations(const std::vector<Jet<DInterval>>&, const std::vector<Coefficients>&,
                                                    const DInterval&);
 template std::vector<Jet<Ball>> kkt_equations(const std::vector<Jet<Ball>>&, const std::vector<Coefficients>&, const Ball&);
+template std::vector<Jet<DInterval>> kkt_equations(const std::vector<Jet<DInterval>>&, const std::vector<Coefficients>&,
+                                                   const Jet<DInterval>&);
 template KrawczykResult<DInterval> isolate_kkt_point(const KktPoint&, const std::vector<Coefficients>&, const DInterval&);
 template KrawczykResult<Ball> isolate_kkt_point(const KktPoint&, const std::vector<Coefficients>&, const Ball&);
 template LocalOptimum<DInterval> certify_local_optimum(const DoubleBasis&, const std::vector<Coefficients>&, const DInterval&);

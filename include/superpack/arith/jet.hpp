@@ -15,6 +15,12 @@ struct Jet {
     I derivative;
 };
 
+// The field of a Jet's scalar, so that formulas templated on their parameter (e.g. p) take a Jet.
+template <class I>
+auto field_of(const Jet<I>& x) {
+    return field_of(x.value);
+}
+
 // The independent variable (derivative 1) and a constant (derivative 0).
 template <class I>
 Jet<I> variable(const I& x) {

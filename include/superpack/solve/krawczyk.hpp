@@ -29,9 +29,25 @@ struct KrawczykResult {
 // The interval part is written with plain loops over std::vector rather than a matrix
 // library's matrices of intervals: those need Scalar(0) conversions and a default-constructed
 // scalar, and a Ball has no meaningful precision until it is made from a field.
-template <class I, class F>
-KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double target_width,
-                                   int max_iterations) {
+// C v for the floating-point matrix C and an interval vector v.
+template <class I>
+std::vector<I> precondition(const DoubleMatrix& inverse, const std::vector<I>& v) {
+    const auto field = field_of(v[0]);
+    std::vector<I> result;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        I sum = field.integer(0);
+        for (std::size_t j = 0; j < v.size(); ++j) sum = sum + from_doubles(field.integer(0), inverse(i, j), inverse(i, j)) * v[j];
+        result.push_back(sum);
+    }
+    return result;
+}
+
+// The same operator with the preconditioned residual C f(m) supplied by `residual(m, C)`, an
+// enclosure of C f(m) (for a family f(x, p) over an interval of p, a mean-value form in p keeps
+// the cancellation that C f(m, P) loses: krawczyk_isolate_in_parameter below).
+template <class I, class F, class R>
+KrawczykResult<I> krawczyk_isolate_with_residual(const F& f, const R& residual, const std::vector<I>& box,
+                                                 double target_width, int max_iterations) {
     const std::size_t n = box.size();
     const auto field = field_of(box[0]);
     KrawczykResult<I> result{RootStatus::undecided, box, box, false, false, 0, ""};
@@ -73,14 +89,12 @@ KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double
             center.push_back(midpoint(current[k]));
             offset.push_back(current[k] - center[k]);
         }
-        const std::vector<I> at_center = f(center);
+        const std::vector<I> preconditioned = residual(center, *inverse);
         std::vector<I> image;
         bool interior = true, disjoint = false;
         for (std::size_t i = 0; i < n; ++i) {
-            I k = center[i];
+            I k = center[i] - preconditioned[i];
             for (std::size_t j = 0; j < n; ++j) {
-                const I c = from_doubles(field.integer(0), (*inverse)(i, j), (*inverse)(i, j));
-                k = k - c * at_center[j];
                 // Row i of (Id - C J(X)).
                 I entry = field.integer(i == j ? 1 : 0);
                 for (std::size_t l = 0; l < n; ++l)
@@ -119,5 +133,35 @@ KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double
     return result;
 }
 
+
+template <class I, class F>
+KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double target_width, int max_iterations) {
+    auto residual = [&](const std::vector<I>& center, const DoubleMatrix& inverse) { return precondition(inverse, f(center)); };
+    return krawczyk_isolate_with_residual(f, residual, box, target_width, max_iterations);
+}
+
+// Krawczyk for f(x, p) = 0 with p in an interval P, proving that for EVERY p in P the box holds
+// exactly one root. K(X, P) = m - C f(m, P) + (I - C J(X, P)) (X - m) is sound but useless on
+// an ill-conditioned system: C f(m, P) is wide by |C| |f_p| w, not |C f_p| w. The mean-value form
+// f(m, p) in f(m, p0) + f_p(m, P) (p - p0) for p in P, with C f(m, p0) and C f_p(m, P) formed first
+// and only then times (P - p0), keeps that cancellation. `f` takes (x, p) with x a vector of I or
+// Jet<I> and p an I or a Jet<I> (the derivative in p: x constant, p the variable); p0 in P.
+template <class I, class F>
+KrawczykResult<I> krawczyk_isolate_in_parameter(const F& f, const std::vector<I>& box, const I& p, const I& p0,
+                                                double target_width, int max_iterations) {
+    auto at_p = [&](const auto& x) { return f(x, p); };
+    auto residual = [&](const std::vector<I>& center, const DoubleMatrix& inverse) {
+        std::vector<Jet<I>> fixed;
+        for (const I& x : center) fixed.push_back(constant(x));
+        std::vector<I> slope;
+        for (const Jet<I>& value : f(fixed, variable(p))) slope.push_back(value.derivative);
+        std::vector<I> result = precondition(inverse, f(center, p0));
+        const std::vector<I> drift = precondition(inverse, slope);
+        const I offset = p - p0;
+        for (std::size_t i = 0; i < result.size(); ++i) result[i] = result[i] + drift[i] * offset;
+        return result;
+    };
+    return krawczyk_isolate_with_residual(at_p, residual, box, target_width, max_iterations);
+}
 
 }  // namespace superpack
