@@ -71,13 +71,6 @@ void write_audit_certificate(const std::string& path, const AuditResult& result)
 
 int run(const AuditOptions& options, bool default_directory) {
     std::vector<Family> families = options.family.empty() ? all_families() : std::vector{parse_family(options.family)};
-    if (families.size() == 1 && !unaudited_reason(families[0]).empty())
-        throw Failure(exit_undecided, "audit: " + unaudited_reason(families[0]));
-    // The default audit lists a family without an audit as a skipped row with its reason.
-    const auto unaudited = std::stable_partition(families.begin(), families.end(),
-                                                 [](Family family) { return unaudited_reason(family).empty(); });
-    const std::vector<Family> skipped(unaudited, families.end());
-    families.erase(unaudited, families.end());
     if (options.second_root && (families.size() != 1 || families[0] != Family::O1))
         throw Failure(exit_usage, "--second-root needs --family O1");
     if (!options.certificate.empty() && (families.size() != 1 || options.second_root))
@@ -141,10 +134,6 @@ int run(const AuditOptions& options, bool default_directory) {
                 std::cout << "\n";
             }
         }
-    }
-    for (Family family : skipped) {
-        audits.push_back(Json{{"family", to_string(family)}, {"skipped", unaudited_reason(family)}});
-        if (!options.json) std::cout << to_string(family) << ": skipped: " << unaudited_reason(family) << "\n";
     }
     if (options.json) {
         document["audits"] = audits;

@@ -28,8 +28,9 @@ struct AuditPiece {
     std::shared_ptr<const LatticeCheck<DInterval>> check;
 };
 
-// Which lattice of a family is audited: the published one, or (O1 only) the other real root
-// branch of Eq. (12) that the paper says does not exist beyond p*_o.
+// Which lattice of a family is audited: the one that defines the family (published for C0, C1,
+// O0, O1 and D14; superpack's own KKT branch for S6), or (O1 only) the other real root branch of
+// Eq. (12) that the paper says does not exist beyond p*_o.
 enum class AuditBranch { published, o1_second_root };
 
 struct AuditRange {
@@ -41,11 +42,6 @@ struct AuditRange {
 // The range the paper claims (C0, C1: [1, 10]; O0: [p*_o, 1]; O1: [1/2, p*_o]), with p*_o
 // replaced by a rational bracket that is checked rigorously (the bracketing piece is audited too).
 AuditRange claimed_audit_range(Family family);
-
-// Why the family has no audit yet, or "" when it has one. S6 is defined point by point (the KKT
-// point continued from p = 9/10, NOTES.md 4.2); an audit over pieces of p needs Krawczyk with p
-// an interval and a chain of boxes anchored at 9/10, which is not written yet.
-std::string unaudited_reason(Family family);
 
 struct AuditSettings {
     int initial_pieces = 16;
