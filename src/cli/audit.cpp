@@ -91,7 +91,7 @@ int run(const AuditOptions& options, bool default_directory) {
     // Every path is checked before hours of work: the default out/ is created, a named directory must exist.
     if (default_directory) create_default_directory(options.output_directory);
     auto file_of = [&](Family family) {
-        const AuditResult named{family, options.second_root ? AuditBranch::o1_second_root : AuditBranch::published, {}, {}};
+        const AuditResult named{family, options.second_root ? AuditBranch::o1_second_root : AuditBranch::published, {}, {}, std::nullopt};
         return options.output_directory + "/" + std::filesystem::path(audit_file_name(named)).filename().string();
     };
     for (Family family : families) require_writable_target(file_of(family));

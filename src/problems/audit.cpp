@@ -84,11 +84,7 @@ std::optional<KrawczykResult<DInterval>> follow_root(const F& equations, const s
 bool linked_to_previous(const BranchTracker& tracker, const std::vector<DInterval>& box, const Rational& p0) {
     if (!tracker.previous) return true;
     const DInterval at = DoubleField{}.rational(p0);
-    const KrawczykResult<DInterval> root = krawczyk_isolate([&](const auto& x) { return d14_equations(x, at); }, box, 0.0, 60);
-    if (root.status != RootStatus::unique) return false;
-    for (std::size_t k = 0; k < box.size(); ++k)
-        if (!contains((*tracker.previous)[k], root.box[k])) return false;
-    return true;
+    return unique_root_within([&](const auto& x) { return d14_equations(x, at); }, box, *tracker.previous);
 }
 
 // S6: the mean-value Krawczyk box of the piece, linked to the box before it (s6_branch.hpp).
@@ -231,7 +227,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     if (branch == AuditBranch::o1_second_root && family != Family::O1)
         throw InputError("the second root branch exists for O1 only");
     if (!(range.lo < range.hi)) throw InputError("empty p range");
-    AuditResult result{family, branch, range, {}};
+    AuditResult result{family, branch, range, {}, std::nullopt};
     const Rational anchor = s6_seed_p();
     if (family == Family::S6) {
         // Sound but stricter than p*_o < p < 1: the rational ends are compared exactly.
@@ -269,6 +265,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
         const std::optional<S6Branch> start = s6_anchor(failure);
         if (!start) throw std::runtime_error("S6: no point proof at p = 9/10 to anchor the audit: " + failure);
         tracker = BranchTracker{{}, std::nullopt, start, false};
+        result.anchor = start;
     }
     const std::optional<BranchTracker> anchored = tracker;
     std::vector<long> counts;

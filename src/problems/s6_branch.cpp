@@ -33,16 +33,11 @@ std::optional<S6Branch> s6_anchor(std::string& failure) {
 
 bool s6_linked(const std::vector<DInterval>& box, const std::vector<DInterval>& previous, const Rational& p) {
     const DInterval at = DoubleField{}.rational(p);
-    KrawczykResult<DInterval> root;
     try {
-        root = krawczyk_isolate([&](const auto& x) { return kkt_equations(x, triples(), at); }, box, 0.0, 60);
+        return unique_root_within([&](const auto& x) { return kkt_equations(x, triples(), at); }, box, previous);
     } catch (const std::domain_error&) {
         return false;
     }
-    if (root.status != RootStatus::unique) return false;
-    for (std::size_t k = 0; k < box.size(); ++k)
-        if (!contains(previous[k], root.box[k])) return false;
-    return true;
 }
 
 S6Piece s6_piece(S6Branch& branch, const Rational& lo, const Rational& hi, const Rational& shared) {

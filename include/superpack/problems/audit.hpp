@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/s6_branch.hpp"
 
 namespace superpack {
 
@@ -58,6 +59,7 @@ struct AuditResult {
     AuditBranch branch = AuditBranch::published;
     AuditRange range;
     std::vector<AuditPiece> pieces;  // in order, covering [range.lo, range.hi] without gaps
+    std::optional<S6Branch> anchor;  // S6: the point proof at 9/10 that its chain starts from
 };
 
 using AuditProgress = std::function<void(const std::string&)>;

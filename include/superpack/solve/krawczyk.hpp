@@ -140,6 +140,17 @@ KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double
     return krawczyk_isolate_with_residual(f, residual, box, target_width, max_iterations);
 }
 
+// Does `box` hold exactly one root of f, lying in `previous`? The link of a continuation: when
+// the root in `previous` is unique there too, both boxes hold the same root.
+template <class I, class F>
+bool unique_root_within(const F& f, const std::vector<I>& box, const std::vector<I>& previous) {
+    const KrawczykResult<I> root = krawczyk_isolate(f, box, 0.0, 60);
+    if (root.status != RootStatus::unique) return false;
+    for (std::size_t k = 0; k < box.size(); ++k)
+        if (!contains(previous[k], root.box[k])) return false;
+    return true;
+}
+
 // Krawczyk for f(x, p) = 0 with p in an interval P, proving that for EVERY p in P the box holds
 // exactly one root. K(X, P) = m - C f(m, P) + (I - C J(X, P)) (X - m) is sound but useless on
 // an ill-conditioned system: C f(m, P) is wide by |C| |f_p| w, not |C f_p| w. The mean-value form
