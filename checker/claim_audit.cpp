@@ -38,12 +38,8 @@ namespace superpack_checker {
 
 namespace {
 
-struct Piece {
-    mpq_class lo, hi;
-};
-
-Piece read_piece_range(Context& context, const Json& node, const std::string& path) {
-    Piece piece{context.rational_at(node, "lo", path), context.rational_at(node, "hi", path)};
+PieceEnds read_piece_range(Context& context, const Json& node, const std::string& path) {
+    PieceEnds piece{context.rational_at(node, "lo", path), context.rational_at(node, "hi", path)};
     context.require(piece.lo < piece.hi, path, "an empty piece (lo >= hi)");
     return piece;
 }
@@ -99,7 +95,7 @@ struct ContinuedPiece {
 // Replays the O1 or D14 box of one piece; returns it, or nothing when the chain to p = 1/2 is
 // broken (the piece then cannot be decided).
 std::optional<ContinuedPiece> replay_continued_piece(Context& context, const std::string& family, const Json& node,
-                                                     const std::string& path, const Piece& piece, const Real& p, Chain& chain,
+                                                     const std::string& path, const PieceEnds& piece, const Real& p, Chain& chain,
                                                      bool first) {
     const mpfr_prec_t precision = p.precision();
     if (node.is_null()) {
@@ -122,8 +118,7 @@ std::optional<ContinuedPiece> replay_continued_piece(Context& context, const std
         for (std::size_t k = 0; k < start.size(); ++k) linked = linked && subset(rational(start[k], precision), box[k]);
     } else if (chain.previous) {
         const Box at_end = root_at(context, family, box, rational(piece.lo, precision), path);
-        linked = true;
-        for (std::size_t k = 0; k < at_end.size(); ++k) linked = linked && subset(at_end[k], (*chain.previous)[k]);
+        linked = box_inside(at_end, *chain.previous);
     }
     chain.previous = box;
     if (!linked) {
@@ -139,7 +134,7 @@ struct MergedRange {
     std::string words;
 };
 
-void merge(std::vector<MergedRange>& ranges, const Piece& piece, const std::string& words) {
+void merge(std::vector<MergedRange>& ranges, const PieceEnds& piece, const std::string& words) {
     if (!ranges.empty() && ranges.back().words == words && ranges.back().hi == piece.lo)
         ranges.back().hi = piece.hi;
     else
@@ -155,8 +150,8 @@ std::string check_audit(const Json& claim, Context& context) {
     const std::string family = read_family(context, data, inputs);
     check_family_definition(context, family, data);
     const bool s6 = family == "S6";
-    const Piece range = read_piece_range(context, context.member(data, "range", "claim.data"), "claim.data.range");
-    const Piece input_range = read_piece_range(context, context.member(inputs, "range", "inputs"), "inputs.range");
+    const PieceEnds range = read_piece_range(context, context.member(data, "range", "claim.data"), "claim.data.range");
+    const PieceEnds input_range = read_piece_range(context, context.member(inputs, "range", "inputs"), "inputs.range");
     context.require(input_range.lo == range.lo && input_range.hi == range.hi, "inputs.range",
                     "the input range differs from the claim's");
     require_family_domain(context, family, range.lo, range.hi, "inputs.range");
@@ -174,8 +169,7 @@ std::string check_audit(const Json& claim, Context& context) {
         std::vector<PieceEnds> ends;
         for (std::size_t k = 0; k < pieces.size(); ++k) {
             const std::string claim_path = "claim.data.pieces[" + std::to_string(k) + "]";
-            const Piece piece = read_piece_range(context, context.member(pieces[k], "p", claim_path), claim_path + ".p");
-            ends.push_back({piece.lo, piece.hi});
+            ends.push_back(read_piece_range(context, context.member(pieces[k], "p", claim_path), claim_path + ".p"));
         }
         s6_roots = replay_s6_chain(context, ends, proofs, context.member(proof, "anchor", "proof"));
     }
@@ -188,7 +182,7 @@ std::string check_audit(const Json& claim, Context& context) {
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         const std::string claim_path = "claim.data.pieces[" + std::to_string(k) + "]";
         const std::string proof_path = "proof.pieces[" + std::to_string(k) + "]";
-        const Piece piece = read_piece_range(context, context.member(pieces[k], "p", claim_path), claim_path + ".p");
+        const PieceEnds piece = read_piece_range(context, context.member(pieces[k], "p", claim_path), claim_path + ".p");
         context.require(piece.lo == reached, claim_path + ".p",
                         piece.lo > reached ? "a gap in the cover of the range" : "the pieces overlap or are out of order");
         reached = piece.hi;

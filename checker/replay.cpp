@@ -45,6 +45,16 @@ Real exact_double(double x, mpfr_prec_t precision) {
     return result;
 }
 
+}  // namespace
+
+bool box_inside(const Box& inner, const Box& outer) {
+    for (std::size_t k = 0; k < inner.size(); ++k)
+        if (!subset(inner[k], outer[k])) return false;
+    return true;
+}
+
+namespace {
+
 // The sum of the widths: a stopping rule that sees any component shrink.
 Width total_width(const Box& box) {
     Width sum;

@@ -12,6 +12,9 @@ namespace superpack_checker {
 
 using Box = std::vector<Real>;
 
+// Every entry of `inner` inside the same entry of `outer` (boxes of one dimension).
+bool box_inside(const Box& inner, const Box& outer);
+
 // F: R^n -> R^n with an interval Jacobian enclosure (or slope enclosure) over a box.
 struct System {
     std::function<std::vector<Real>(const Box&)> value;

@@ -20,12 +20,6 @@ std::optional<Box> root_at(const Box& box, const mpq_class& p, mpfr_prec_t preci
     return std::nullopt;
 }
 
-bool inside(const Box& inner, const Box& outer) {
-    for (std::size_t k = 0; k < inner.size(); ++k)
-        if (!subset(inner[k], outer[k])) return false;
-    return true;
-}
-
 // One piece's box: exactly one KKT point for every p of the piece (rejects otherwise); returns
 // the box and the checker's root over the piece.
 std::pair<Box, Box> replay_piece(Context& context, const Json& node, const std::string& path, const PieceEnds& piece) {
@@ -64,8 +58,8 @@ std::vector<std::optional<Box>> replay_s6_chain(Context& context, const std::vec
                                                 const Json& anchor) {
     const mpfr_prec_t precision = context.precision();
     const mpq_class at = s6_anchor_p();
-    const KktPoint point = replay_kkt_point(context, s6_triples(), anchor, "proof.anchor", rational(at, precision));
-    (void)point;
+    // Rejects at proof.anchor unless its box holds exactly one KKT point at p = 9/10.
+    replay_kkt_point(context, s6_triples(), anchor, "proof.anchor", rational(at, precision));
     const Box anchor_box = context.box(context.member(anchor, "box", "proof.anchor"), "proof.anchor.box");
     std::optional<std::size_t> up, down;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -85,7 +79,7 @@ std::vector<std::optional<Box>> replay_s6_chain(Context& context, const std::vec
             const auto [box, root] = replay_piece(context, node, path, pieces[k]);
             const mpq_class& shared = step > 0 ? pieces[k].lo : pieces[k].hi;
             const std::optional<Box> end = root_at(box, shared, precision);
-            if (!end || !inside(*end, previous)) return;
+            if (!end || !box_inside(*end, previous)) return;
             roots[k] = root;
             previous = box;
             if (k == 0 && step < 0) return;
