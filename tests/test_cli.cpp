@@ -84,6 +84,19 @@ TEST_CASE("bad input: one line on stderr, exit 2, nothing on stdout") {
     }
 }
 
+TEST_CASE("critical: its limits are one-line errors, exit 2, before any computation") {
+    for (const char* arguments : {"critical --p 0.5", "critical --p 11", "critical --p 1", "critical --p 2 --gap 0.5",
+                                  "critical --p 2 --gap -0.1", "critical --p 2 --threads 0", "critical --p 2 --threads 65",
+                                  "critical --p 2 --shard 3/2", "critical --p 2 --shard 0/289", "critical --p 2 --shard x",
+                                  "critical --p 2 --max-boxes 0", "critical --gap 0.1"}) {
+        INFO(arguments);
+        const Run result = run(arguments);
+        CHECK(result.status == 2);
+        CHECK(result.out.empty());
+        CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+    }
+}
+
 TEST_CASE("density --json: one document with the contract's names and widths") {
     const Run result = run("density --family C0 --p 1.5 --json");
     REQUIRE(result.status == 0);

@@ -64,10 +64,6 @@ std::vector<T> kkt_equations(const std::vector<T>& x, const std::vector<Coeffici
     return equations;
 }
 
-namespace {
-
-// Interval Cholesky of the symmetric matrix whose lower triangle is `m`: success (every pivot
-// certainly positive) proves every symmetric matrix with entries in m positive definite.
 template <class I>
 bool certainly_positive_definite(const std::vector<std::vector<I>>& m) {
     const std::size_t n = m.size();
@@ -86,7 +82,8 @@ bool certainly_positive_definite(const std::vector<std::vector<I>>& m) {
     return true;
 }
 
-}  // namespace
+template bool certainly_positive_definite(const std::vector<std::vector<DInterval>>&);
+template bool certainly_positive_definite(const std::vector<std::vector<Ball>>&);
 
 template <class I>
 KrawczykResult<I> isolate_kkt_point(const KktPoint& guess, const std::vector<Coefficients>& active, const I& p) {

@@ -44,6 +44,12 @@ std::vector<T> kkt_equations(const std::vector<T>& x, const std::vector<Coeffici
 template <class I>
 KrawczykResult<I> isolate_kkt_point(const KktPoint& guess, const std::vector<Coefficients>& active, const I& p);
 
+// Interval Cholesky of the symmetric matrix whose lower triangle is `m`: success (every pivot
+// certainly positive) proves every symmetric matrix with entries in m positive definite (the
+// second-order condition here, and on a whole region in problems/closing_region.hpp).
+template <class I>
+bool certainly_positive_definite(const std::vector<std::vector<I>>& m);
+
 // From a floating-point guess of the lattice (any basis of it) and its contact triples in that
 // basis (one per +-pair, or both signs). A basis with det < 0 is used with b3 negated, and the
 // certified basis and contacts are then in that basis.

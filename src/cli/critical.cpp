@@ -1,0 +1,173 @@
+// superpack critical --p P [--gap G] [--threads N] [--shard i/n] [--max-boxes M] [--json]
+// A certified upper bound on the lattice packing density at p (problems/critical.hpp, NOTES 12).
+#include <chrono>
+#include <memory>
+
+#include "common.hpp"
+#include "superpack/arith/enclosure_json.hpp"
+#include "superpack/problems/critical.hpp"
+
+namespace superpack::cli {
+
+namespace {
+
+struct CriticalCommandOptions {
+    std::string p, gap = "0", shard = "0/1";
+    int threads = 1;
+    long max_boxes = 50000000;
+    bool json = false;
+};
+
+constexpr int max_threads = 64;
+constexpr long max_box_budget = 2000000000;
+
+// --shard i/n with 0 <= i < n <= the number of top-level boxes.
+std::pair<int, int> parse_shard(const std::string& text) {
+    const std::size_t slash = text.find('/');
+    const std::string limit = "--shard: i/n with 0 <= i < n <= " + std::to_string(top_level_boxes);
+    if (slash == std::string::npos || text.size() > 20) throw InputError(limit + ", got \"" + text.substr(0, 20) + "\"");
+    try {
+        std::size_t used_i = 0, used_n = 0;
+        const int i = std::stoi(text.substr(0, slash), &used_i);
+        const int n = std::stoi(text.substr(slash + 1), &used_n);
+        if (used_i != slash || used_n != text.size() - slash - 1 || i < 0 || n < 1 || i >= n || n > top_level_boxes)
+            throw InputError(limit + ", got \"" + text + "\"");
+        return {i, n};
+    } catch (const std::logic_error&) {
+        throw InputError(limit + ", got \"" + text + "\"");
+    }
+}
+
+Json box_json(const ChartBox<DInterval>& box) {
+    Json x = Json::array();
+    for (const DInterval& value : box.x) x.push_back(enclosure_json(value));
+    return {{"configuration", configuration_name(box.configuration)}, {"face2", box.face2}, {"face3", box.face3}, {"x", x},
+            {"depth", box.depth}};
+}
+
+Json result_json(const CriticalResult<DInterval>& result) {
+    Json counts = Json::object();
+    for (int r = 0; r < box_reasons; ++r) counts[box_reason_name(static_cast<BoxReason>(r))] = result.counts[r];
+    Json regions = Json::array();
+    for (const ClosingRegion<DInterval>& region : result.regions)
+        regions.push_back({{"verdict", region.verdict == Outcome::proved ? "proved" : "undecided"},
+                           {"reason", region.reason},
+                           {"radius", region.radius},
+                           {"rho", region.rho},
+                           {"determinant", enclosure_json(region.determinant)}});
+    Json undecided = Json::array();
+    for (const UndecidedBox<DInterval>& box : result.undecided) {
+        Json item = box_json(box.box);
+        item["reason"] = box_reason_name(box.reason);
+        undecided.push_back(item);
+    }
+    Json basis = Json::array();
+    for (const auto& row : result.reference.basis)
+        basis.push_back(Json::array({enclosure_json(row[0]), enclosure_json(row[1]), enclosure_json(row[2])}));
+    return {{"status", result.status == Outcome::proved ? "proved" : "undecided"},
+            {"message", result.message},
+            {"lower", {{"lattice", result.reference.name}, {"phi", enclosure_json(result.reference.phi)}, {"basis", basis}}},
+            {"upper", {{"phi", enclosure_json(result.upper_phi)}}},
+            {"relative_gap", enclosure_json(result.relative_gap)},
+            {"threshold", enclosure_json(result.threshold)},
+            {"volume", enclosure_json(result.volume)},
+            {"boxes", counts},
+            {"processed", result.processed},
+            {"start_boxes", result.start_boxes},
+            {"regions", regions},
+            {"images", result.images.size()},
+            {"undecided_examples", undecided},
+            {"seconds", result.seconds}};
+}
+
+void print_table(const CriticalResult<DInterval>& result, const CriticalOptions& options) {
+    const DecimalEnclosure lower = to_decimal(result.reference.phi, 17);
+    const DecimalEnclosure upper = to_decimal(result.upper_phi, 17);
+    const DecimalEnclosure gap = to_decimal(result.relative_gap, 3);
+    const DecimalEnclosure threshold = to_decimal(result.threshold, 17);
+    std::cout << "p            " << decimal_or_fraction_text(options.p) << "\n"
+              << "lower        phi in [" << lower.lo << ", " << lower.hi << "]  " << result.reference.name
+              << " (the densest certified lattice packing, superpack best)\n"
+              << "upper        phi <= " << upper.hi << (result.status == Outcome::proved ? "" : "  (not proved)") << "\n"
+              << "gap          upper / lower - 1 <= " << gap.hi << "\n"
+              << "threshold    |det| >= " << threshold.lo << " for every lattice packing"
+              << (result.status == Outcome::proved ? "" : " (not proved)") << "\n";
+    if (result.partial_domain)
+        std::cout << "domain       shard " << options.shard << "/" << options.shards << ": " << result.start_boxes << " of "
+                  << top_level_boxes << " top-level boxes (the bound needs every shard)\n";
+    std::cout << "status       " << (result.status == Outcome::proved ? "proved" : "undecided") << ": " << result.message << "\n"
+              << "boxes        " << result.processed << " evaluated; leaves:";
+    for (int r = 0; r < box_reasons; ++r)
+        if (result.counts[r] > 0) std::cout << " " << box_reason_name(static_cast<BoxReason>(r)) << " " << result.counts[r];
+    std::cout << "\n";
+    for (const ClosingRegion<DInterval>& region : result.regions)
+        std::cout << "region       " << (region.verdict == Outcome::proved ? "proved" : "undecided") << ": " << region.reason
+                  << (region.verdict == Outcome::proved ? ", radius " + std::to_string(region.radius) : std::string()) << ", "
+                  << result.images.size() << " images in the chart\n";
+    std::cout << "time         " << result.seconds << " s on " << options.threads << " threads\n";
+}
+
+int run(const CriticalCommandOptions& command) {
+    CriticalOptions options;
+    options.p = parse_p(command.p);
+    options.gap = parse_number(command.gap, "--gap");
+    require_critical_domain(options.p, options.gap);
+    if (command.threads < 1 || command.threads > max_threads)
+        throw InputError("--threads: 1 to " + std::to_string(max_threads) + ", got " + std::to_string(command.threads));
+    if (command.max_boxes < 1 || command.max_boxes > max_box_budget)
+        throw InputError("--max-boxes: 1 to " + std::to_string(max_box_budget) + ", got " + std::to_string(command.max_boxes));
+    options.threads = command.threads;
+    options.max_boxes = command.max_boxes;
+    std::tie(options.shard, options.shards) = parse_shard(command.shard);
+    const DoubleField field;
+    std::cerr << "critical: certifying the densest lattice at p (best)\n";
+    const CriticalReference<DInterval> reference = critical_reference(options.p, field);
+    options.progress = [](const CriticalProgress& progress) {
+        std::cerr << "critical: " << progress.seconds << " s, " << progress.processed << " boxes evaluated, "
+                  << progress.queued << " queued, " << progress.counts[static_cast<int>(BoxReason::determinant)]
+                  << " closed by det, " << progress.counts[static_cast<int>(BoxReason::undecided_width)] +
+                                               progress.counts[static_cast<int>(BoxReason::undecided_budget)]
+                  << " undecided\n";
+    };
+    const CriticalResult<DInterval> result = critical_bound(reference, options);
+    if (command.json) {
+        Json document = header_json("critical", field, 15);
+        document["p"] = command.p;
+        document["p_exact"] = rational_text(options.p);
+        document["gap"] = rational_text(options.gap);
+        document["threads"] = options.threads;
+        document["max_boxes"] = options.max_boxes;
+        // What a later merge needs (issue 13 item 3): the shard, the domain's size, and T.
+        document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes}};
+        document.update(result_json(result));
+        print_json(document);
+    } else {
+        print_table(result, options);
+    }
+    if (result.status != Outcome::proved) throw Failure(exit_undecided, "critical: undecided: " + result.message);
+    return exit_ok;
+}
+
+void add_critical(CLI::App& app) {
+    auto options = std::make_shared<CriticalCommandOptions>();
+    CLI::App* command = app.add_subcommand(
+        "critical", "A certified upper bound on the lattice packing density at p (branch and bound over Minkowski's configurations)");
+    command->add_option("--p", options->p, "deformation parameter 1/2 < p <= 10: a decimal or a fraction")->required();
+    command->add_option("--gap", options->gap,
+                        "relative gap 0 <= G < 1/2: prove |det| >= (1 - G) |det| of the best lattice (default 0)");
+    command->add_option("--threads", options->threads, "worker threads, 1 to " + std::to_string(max_threads) + " (default 1)");
+    command->add_option("--shard", options->shard,
+                        "i/n: only the top-level boxes whose index is i mod n (0 <= i < n <= " +
+                            std::to_string(top_level_boxes) + "; default 0/1)");
+    command->add_option("--max-boxes", options->max_boxes,
+                        "boxes evaluated at most, 1 to " + std::to_string(max_box_budget) +
+                            " (default 5e7); the rest stay undecided");
+    command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->callback([options] { run(*options); });
+}
+
+const SubcommandRegistration registration("critical", add_critical);
+
+}  // namespace
+
+}  // namespace superpack::cli

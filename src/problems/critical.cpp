@@ -1,0 +1,202 @@
+#include "superpack/problems/critical.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "critical_box.hpp"
+#include "superpack/geometry/superball.hpp"
+#include "superpack/problems/best.hpp"
+
+namespace superpack {
+
+const char* box_reason_name(BoxReason reason) {
+    switch (reason) {
+        case BoxReason::no_configuration: return "no_configuration";
+        case BoxReason::relabelled: return "relabelled";
+        case BoxReason::volume: return "volume";
+        case BoxReason::short_vector: return "short_vector";
+        case BoxReason::determinant: return "determinant";
+        case BoxReason::closing_region: return "closing_region";
+        case BoxReason::undecided_width: return "undecided_width";
+        case BoxReason::undecided_budget: return "undecided_budget";
+        case BoxReason::undecided_contract: return "undecided_contract";
+    }
+    return "?";
+}
+
+bool decided(BoxReason reason) {
+    return reason != BoxReason::undecided_width && reason != BoxReason::undecided_budget &&
+           reason != BoxReason::undecided_contract;
+}
+
+std::vector<ChartBox<DInterval>> top_level_domain() {
+    const DoubleField field;
+    const DInterval half = field.rational(Rational(1, 2));
+    const std::array<DInterval, 2> halves{hull(field.integer(0), half), hull(half, field.integer(1))};
+    const DInterval side = hull(field.integer(-1), field.integer(1));
+    std::vector<ChartBox<DInterval>> boxes;
+    for (const MinkowskiCase configuration : {MinkowskiCase::a3, MinkowskiCase::w})
+        for (int face2 = 0; face2 < cube_faces; ++face2)
+            for (int face3 = 0; face3 < cube_faces; ++face3)
+                for (int piece = 0; piece < 4; ++piece) {
+                    ChartBox<DInterval> box;
+                    box.configuration = configuration;
+                    box.face2 = face2;
+                    box.face3 = face3;
+                    box.x = {halves[piece / 2], halves[piece % 2], side, side, side, side};
+                    boxes.push_back(box);
+                }
+    return boxes;
+}
+
+void require_critical_domain(const Rational& p, const Rational& gap) {
+    if (!(p > Rational(1, 2)) || p > Rational(10))
+        throw InputError("critical: p must satisfy 1/2 < p <= 10 (2K is smooth and strictly convex for p > 1/2; the "
+                         "chart is measured up to 10)");
+    if (gap < Rational(0) || !(gap < Rational(1, 2))) throw InputError("critical: --gap must satisfy 0 <= gap < 1/2");
+    if (p == Rational(1) && gap == Rational(0))
+        throw InputError("critical: at p = 1 the densest lattices form a continuum (rotations of FCC), so no box around "
+                         "them closes: give --gap G > 0");
+}
+
+CriticalReference<DInterval> critical_reference(const Rational& p, const DoubleField& field) {
+    const BestLattice<DInterval> best = find_best_lattice(p, field, BestOptions{});
+    CriticalReference<DInterval> reference;
+    if (best.status != Outcome::proved) throw std::runtime_error("critical: best found no certified packing: " + best.message);
+    reference.name = best_name(best);
+    reference.phi = best_phi(best);
+    reference.basis = best_basis(best);
+    reference.optimum = best.local;
+    return reference;
+}
+
+namespace {
+
+// One work queue shared by the threads: a stack of boxes (depth first keeps it short). The
+// leaves' reasons do not depend on the order, so the counts are the same for any number of
+// threads unless the budget is reached.
+struct WorkQueue {
+    std::mutex mutex;
+    std::condition_variable wake;
+    std::vector<ChartBox<DInterval>> stack;
+    int active = 0;
+    long processed = 0;
+    std::array<long, box_reasons> counts{};
+    std::vector<UndecidedBox<DInterval>> undecided;
+    bool finished = false;
+};
+
+constexpr std::size_t kept_undecided = 20;
+
+void work(WorkQueue& queue, const BoxContext& context, long max_boxes) {
+    std::unique_lock<std::mutex> lock(queue.mutex);
+    for (;;) {
+        queue.wake.wait(lock, [&] { return !queue.stack.empty() || queue.active == 0; });
+        if (queue.stack.empty()) {
+            queue.finished = true;
+            queue.wake.notify_all();
+            return;
+        }
+        ChartBox<DInterval> box = queue.stack.back();
+        queue.stack.pop_back();
+        const bool over_budget = queue.processed >= max_boxes;
+        ++queue.processed;
+        ++queue.active;
+        lock.unlock();
+        std::optional<BoxReason> reason =
+            over_budget ? std::optional<BoxReason>(BoxReason::undecided_budget) : classify_box(box, context);
+        std::array<ChartBox<DInterval>, 2> halves;
+        if (!reason) halves = split_box(box);
+        lock.lock();
+        --queue.active;
+        if (reason) {
+            ++queue.counts[static_cast<int>(*reason)];
+            if (!decided(*reason) && queue.undecided.size() < kept_undecided) queue.undecided.push_back({box, *reason});
+        } else {
+            queue.stack.push_back(halves[1]);
+            queue.stack.push_back(halves[0]);
+        }
+        queue.wake.notify_all();
+    }
+}
+
+}  // namespace
+
+CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& reference, const CriticalOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    const DoubleField field;
+    CriticalResult<DInterval> result;
+    result.reference = reference;
+    const DInterval p = field.rational(options.p);
+    result.volume = enclose_ball_volume(p, 3);
+    const DInterval reference_det = abs(determinant(reference.basis));
+    DInterval threshold = lower_point(reference_det * (field.integer(1) - field.rational(options.gap)));
+
+    // Closing regions around the reference's critical lattice (when it is a certified local
+    // optimum), and their images in the chart.
+    if (reference.optimum && reference.optimum->verdict == Outcome::proved) {
+        result.regions.push_back(certify_closing_region(*reference.optimum, p, options.region_radius, 6));
+        if (result.regions.back().verdict == Outcome::proved) {
+            std::vector<ChartImage> images = chart_images(result.regions.back(), 0);
+            result.images.insert(result.images.end(), images.begin(), images.end());
+            // det >= det B* on the region: T may not exceed it.
+            const DInterval region_det = lower_point(result.regions.back().determinant);
+            if (certainly_less(region_det, threshold)) threshold = region_det;
+        }
+    }
+    result.threshold = threshold;
+
+    WorkQueue queue;
+    const std::vector<ChartBox<DInterval>> domain = options.start_boxes.empty() ? top_level_domain() : options.start_boxes;
+    for (std::size_t k = 0; k < domain.size(); ++k)
+        if (static_cast<int>(k % static_cast<std::size_t>(options.shards)) == options.shard) queue.stack.push_back(domain[k]);
+    result.partial_domain = options.shards > 1 || !options.start_boxes.empty();
+    result.start_boxes = static_cast<long>(queue.stack.size());
+    std::reverse(queue.stack.begin(), queue.stack.end());
+
+    const BoxContext context = box_context(options.p, result.volume, threshold, result.regions, result.images, options.min_width);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < std::max(1, options.threads); ++t)
+        threads.emplace_back([&] { work(queue, context, options.max_boxes); });
+    std::thread monitor;
+    if (options.progress)
+        monitor = std::thread([&] {
+            std::unique_lock<std::mutex> lock(queue.mutex);
+            while (!queue.wake.wait_for(lock, std::chrono::seconds(2), [&] { return queue.finished; })) {
+                CriticalProgress progress;
+                progress.processed = queue.processed;
+                progress.queued = static_cast<long>(queue.stack.size());
+                progress.counts = queue.counts;
+                progress.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                lock.unlock();
+                options.progress(progress);
+                lock.lock();
+            }
+        });
+    for (std::thread& thread : threads) thread.join();
+    if (monitor.joinable()) monitor.join();
+
+    result.counts = queue.counts;
+    result.processed = queue.processed;
+    result.undecided = queue.undecided;
+    long undecided = 0;
+    for (int r = 0; r < box_reasons; ++r)
+        if (!decided(static_cast<BoxReason>(r))) undecided += result.counts[r];
+    result.upper_phi = upper_point(result.volume / threshold);
+    result.relative_gap = upper_point(result.upper_phi / lower_point(reference.phi) - field.integer(1));
+    if (undecided == 0) {
+        result.status = Outcome::proved;
+        result.message = result.partial_domain
+                             ? "every box of this part of the domain is decided: on it every lattice packing has |det| >= T"
+                             : "every box is decided: every lattice packing of K has |det| >= T, so density <= V(K) / T";
+    } else {
+        result.message = std::to_string(undecided) + " boxes undecided, so no bound is proved";
+    }
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace superpack

@@ -1,0 +1,31 @@
+// The decision for one box of `superpack critical` (NOTES.md 12.3): each test proves its reason
+// for every point of the box, or the box is split.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "superpack/problems/critical.hpp"
+
+namespace superpack {
+
+struct BoxContext {
+    DInterval two_p;
+    DInterval volume;     // V(K)
+    DInterval threshold;  // T (a point)
+    std::vector<Coefficients> short_candidates;  // |c_i| <= 2, one per pair, not in a configuration
+    const std::vector<ClosingRegion<DInterval>>* regions = nullptr;
+    const std::vector<ChartImage>* images = nullptr;
+    double min_width = 0;
+};
+
+BoxContext box_context(const Rational& p, const DInterval& volume, const DInterval& threshold,
+                       const std::vector<ClosingRegion<DInterval>>& regions, const std::vector<ChartImage>& images,
+                       double min_width);
+
+// The reason of a leaf, or nothing when the box must be split.
+std::optional<BoxReason> classify_box(const ChartBox<DInterval>& box, const BoxContext& context);
+
+// The two halves of the box along its widest coordinate.
+std::array<ChartBox<DInterval>, 2> split_box(const ChartBox<DInterval>& box);
+
+}  // namespace superpack
