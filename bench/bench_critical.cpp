@@ -1,0 +1,65 @@
+// `superpack critical` at p = 2 (binary64): the branch and bound over boxes of half-width 5e-5
+// (in the chart) around C1's images, on 1 and then 2 threads in the same run; the goal is a
+// speedup of 1.8 (issue 13), reported as the ratio of the two wall times. The leaves must be
+// the same on both (the order of the queue does not change a box's reason).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "superpack/problems/critical.hpp"
+
+using namespace superpack;
+
+namespace {
+
+// The chart box of half-width h around a chart basis (as in tests/test_critical.cpp).
+ChartBox<DInterval> box_around(const DoubleBasis& b, MinkowskiCase configuration, double h) {
+    ChartBox<DInterval> box;
+    box.configuration = configuration;
+    const DInterval like(0.0);
+    auto clipped = [&](double centre, double lo, double hi) {
+        return from_doubles(like, std::max(lo, centre - h), std::min(hi, centre + h));
+    };
+    box.x[0] = clipped(b[0][1] / b[0][0], 0, 1);
+    box.x[1] = clipped(b[0][1] > 0 ? b[0][2] / b[0][1] : 0, 0, 1);
+    for (int k = 1; k < 3; ++k) {
+        int axis = 0;
+        for (int j = 1; j < 3; ++j)
+            if (std::fabs(b[k][j]) > std::fabs(b[k][axis])) axis = j;
+        (k == 1 ? box.face2 : box.face3) = 2 * axis + (b[k][axis] < 0 ? 1 : 0);
+        const double scale = std::fabs(b[k][axis]);
+        box.x[2 * k] = clipped(b[k][axis == 0 ? 1 : 0] / scale, -1, 1);
+        box.x[2 * k + 1] = clipped(b[k][axis == 2 ? 1 : 2] / scale, -1, 1);
+    }
+    return box;
+}
+
+}  // namespace
+
+int main() {
+    const DoubleField field;
+    const Rational p(2);
+    const CriticalReference<DInterval> reference = critical_reference(p, field);
+    if (!reference.optimum) return 1;
+    const ClosingRegion<DInterval> region = certify_closing_region(*reference.optimum, field.rational(p), 1e-2, 6);
+    CriticalOptions options;
+    options.p = p;
+    for (const ChartImage& image : chart_images(region, 0))
+        options.start_boxes.push_back(box_around(image.chart_basis, image.configuration, 5e-5));
+    CriticalResult<DInterval> results[2];
+    double seconds[2];
+    for (int threads = 1; threads <= 2; ++threads) {
+        options.threads = threads;
+        const auto start = std::chrono::steady_clock::now();
+        results[threads - 1] = critical_bound(reference, options);
+        seconds[threads - 1] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    const bool proved = results[0].status == Outcome::proved && results[1].status == Outcome::proved &&
+                        results[0].counts == results[1].counts;
+    const double speedup = seconds[0] / seconds[1];
+    std::printf("critical --p 2 around C1's images (%ld boxes, %s): 1 thread %.2f s, 2 threads %.2f s, speedup %.2fx "
+                "goal 1.8x %s\n",
+                results[0].processed, proved ? "proved, same leaves" : "NOT PROVED OR LEAVES DIFFER", seconds[0], seconds[1],
+                speedup, speedup >= 1.8 ? "PASS" : "FAIL");
+    return proved ? 0 : 1;  // a missed speedup is reported, not an error
+}
