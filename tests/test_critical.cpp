@@ -159,6 +159,19 @@ TEST_CASE("closing region at C1, p = 2: proved with the KKT multipliers, refused
     CHECK(wide.verdict != Outcome::proved);
 }
 
+TEST_CASE("closing region at p = 3/5: D14 has seven contact pairs, so its region has no image in a six-pair chart") {
+    const DoubleField field;
+    const CriticalReference<DInterval> reference = critical_reference(Rational(3, 5), field);
+    REQUIRE(reference.optimum);
+    REQUIRE(reference.optimum->verdict == Outcome::proved);
+    CHECK(reference.optimum->contacts.size() == 7);
+    const ClosingRegion<DInterval> region = certify_closing_region(*reference.optimum, field.rational(Rational(3, 5)), 1e-2, 6);
+    INFO(region.reason);
+    REQUIRE(region.verdict == Outcome::proved);
+    // A chart point satisfies only six of the region's seven constraints: no image.
+    CHECK(chart_images(region, 0).empty());
+}
+
 TEST_CASE("critical at p = 2 around C1's images: every box closes (det bound or closing region), one run and two shards") {
     const ClosingRegion<DInterval>& region = region_at_2();
     REQUIRE(region.verdict == Outcome::proved);

@@ -103,8 +103,10 @@ std::vector<ChartImage> chart_images(const ClosingRegion<DInterval>& region, std
                         const std::array<Coefficients, 3> w{coefficients[i1], coefficients[i2], coefficients[i3]};
                         const long det = integer_determinant(w);
                         if (det != 1 && det != -1) continue;
-                        // The configuration's six triples must be the region's contacts exactly.
-                        bool same = true;
+                        // The configuration's six triples must be the region's contacts exactly: the
+                        // region's lemma needs every one of its constraints, and a chart point satisfies
+                        // only the configuration's six (a seven-pair optimum such as D14 gets no image).
+                        bool same = region.contacts.size() == 6;
                         for (const Coefficients& d : configuration_triples(configuration)) {
                             Coefficients image{};
                             for (int k = 0; k < 3; ++k) image[k] = d[0] * w[0][k] + d[1] * w[1][k] + d[2] * w[2][k];
