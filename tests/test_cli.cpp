@@ -97,6 +97,21 @@ TEST_CASE("critical: its limits are one-line errors, exit 2, before any computat
     }
 }
 
+TEST_CASE("critical with a budget too small: the whole answer printed, status undecided, exit 4") {
+    const Run result = run("critical --p 2 --max-boxes 50 --json");
+    CHECK(result.status == 4);
+    const auto document = nlohmann::json::parse(result.out);
+    CHECK(document["status"] == "undecided");
+    CHECK(document["boxes"]["undecided_budget"].get<long>() > 0);
+    CHECK(document["lower"]["lattice"] == "C1");
+    CHECK(document["shard"]["top_level_boxes"] == 288);
+    CHECK(result.err.find("undecided") != std::string::npos);
+    const Run table = run("critical --p 2 --max-boxes 50 --shard 1/2");
+    CHECK(table.status == 4);
+    CHECK(table.out.find("shard 1/2") != std::string::npos);
+    CHECK(table.out.find("(not proved)") != std::string::npos);
+}
+
 TEST_CASE("density --json: one document with the contract's names and widths") {
     const Run result = run("density --family C0 --p 1.5 --json");
     REQUIRE(result.status == 0);

@@ -158,7 +158,9 @@ std::optional<BoxReason> classify_box(const ChartBox<I>& box, const BoxContext& 
         if (in_closing_region(basis, context)) return BoxReason::closing_region;
 
         for (const Coefficients& c : context.short_candidates) {
-            if (std::find(triples.begin(), triples.end(), c) != triples.end()) continue;
+            // The configuration's own vectors have norm 2 on M (and below 2 only off M, where g excludes).
+            if (std::any_of(triples.begin(), triples.end(), [&](const Coefficients& t) { return representative(t) == c; }))
+                continue;
             const std::array<I, 3> v = combination(basis, c);
             if (certainly_longer(v, field.integer(2))) continue;
             if (certainly_less(half_norm_power(v, two_p), one)) return BoxReason::short_vector;
