@@ -87,7 +87,7 @@ TEST_CASE("bad input: one line on stderr, exit 2, nothing on stdout") {
 TEST_CASE("critical: its limits are one-line errors, exit 2, before any computation") {
     for (const char* arguments : {"critical --p 0.5", "critical --p 11", "critical --p 1", "critical --p 2 --gap 0.5",
                                   "critical --p 2 --gap -0.1", "critical --p 2 --threads 0", "critical --p 2 --threads 65",
-                                  "critical --p 2 --shard 3/2", "critical --p 2 --shard 0/289", "critical --p 2 --shard x",
+                                  "critical --p 2 --shard 3/2", "critical --p 2 --shard 0/169", "critical --p 2 --shard x",
                                   "critical --p 2 --max-boxes 0", "critical --gap 0.1"}) {
         INFO(arguments);
         const Run result = run(arguments);
@@ -104,7 +104,7 @@ TEST_CASE("critical with a budget too small: the whole answer printed, status un
     CHECK(document["status"] == "undecided");
     CHECK(document["boxes"]["undecided_budget"].get<long>() > 0);
     CHECK(document["lower"]["lattice"] == "C1");
-    CHECK(document["shard"]["top_level_boxes"] == 288);
+    CHECK(document["shard"]["top_level_boxes"] == 168);
     CHECK(result.err.find("undecided") != std::string::npos);
     const Run table = run("critical --p 2 --max-boxes 50 --shard 1/2");
     CHECK(table.status == 4);

@@ -81,6 +81,8 @@ TEST_CASE("critical chart: (s, t) in [0, 1]^2 covers the triangle x >= y >= z >=
         CHECK(mid_double(v[face / 2 == 2 ? 1 : 2]) == -0.5);
     }
     CHECK(top_level_domain().size() == static_cast<std::size_t>(top_level_boxes));
+    CHECK(top_level_boxes == 168);
+    for (const ChartBox<DInterval>& box : top_level_domain()) CHECK(box.face2 <= box.face3);
 }
 
 TEST_CASE("critical relabelling: Stab(A3) moves b1 to each of its 12 vectors, Stab(W) only to +-b1, +-b2, +-b3") {
@@ -112,6 +114,13 @@ TEST_CASE("critical relabelling: Stab(A3) moves b1 to each of its 12 vectors, St
                     first_rows.insert(r0);
                 }
         INFO(configuration_name(configuration));
+        // Swapping b2 and b3 keeps b1 and the configuration: the chart may take face2 <= face3.
+        const std::array<Coefficients, 3> swap{{{1, 0, 0}, {0, 0, 1}, {0, 1, 0}}};
+        for (const Coefficients& d : set) {
+            Coefficients image{};
+            for (int k = 0; k < 3; ++k) image[k] = d[0] * swap[0][k] + d[1] * swap[1][k] + d[2] * swap[2][k];
+            CHECK(in_set(image));
+        }
         if (configuration == MinkowskiCase::a3) {
             CHECK(order == 48);
             CHECK(first_rows.size() == 12);

@@ -40,7 +40,7 @@ std::vector<ChartBox<DInterval>> top_level_domain() {
     std::vector<ChartBox<DInterval>> boxes;
     for (const MinkowskiCase configuration : {MinkowskiCase::a3, MinkowskiCase::w})
         for (int face2 = 0; face2 < cube_faces; ++face2)
-            for (int face3 = 0; face3 < cube_faces; ++face3)
+            for (int face3 = face2; face3 < cube_faces; ++face3)
                 for (int piece = 0; piece < 4; ++piece) {
                     ChartBox<DInterval> box;
                     box.configuration = configuration;
