@@ -7,6 +7,7 @@
 
 #include "support.hpp"
 #include "superpack/problems/critical.hpp"
+#include "superpack/problems/critical_contraction.hpp"
 
 using namespace superpack;
 
@@ -225,6 +226,67 @@ TEST_CASE("critical at p = 2 around C1's images: every box closes (det bound or 
     const CriticalResult<DInterval> stopped = critical_bound(reference_at_2(), budget);
     CHECK(stopped.status == Outcome::undecided);
     CHECK(stopped.counts[static_cast<int>(BoxReason::undecided_budget)] > 0);
+}
+
+TEST_CASE("critical contractors: contract_linear keeps each point where the form meets a target and cuts the rest") {
+    const DInterval zero(0.0), whole(-1.0, 1.0);
+    ChartPoint center, x;
+    center.fill(zero);
+    x.fill(whole);
+    // f = 0.1 + x0 + [-0.01, 0.01] x1 on [-1, 1]^6.
+    LinearForm form{DInterval(0.1), {}};
+    form.slope.fill(zero);
+    form.slope[0] = DInterval(1.0);
+    form.slope[1] = DInterval(-0.01, 0.01);
+    ChartPoint root = x;
+    REQUIRE(contract_linear(form, {zero}, root, center));
+    CHECK(contains(root[0], DInterval(-0.11 + 1e-9, -0.09 - 1e-9)));
+    CHECK(certainly_less(DInterval(-0.12), root[0]));
+    CHECK(certainly_less(root[0], DInterval(-0.08)));
+    for (int k = 1; k < chart_dimension; ++k) CHECK(same_interval(root[k], whole));  // slopes with 0: not cut
+    // Two targets: the hull of both parts; a target out of reach: nothing left.
+    ChartPoint two = x;
+    REQUIRE(contract_linear(form, {zero, DInterval(0.5, 0.6)}, two, center));
+    CHECK(contains(two[0], DInterval(-0.11 + 1e-9, 0.51 - 1e-9)));
+    CHECK(certainly_less(two[0], DInterval(0.52)));
+    ChartPoint none = x;
+    CHECK(!contract_linear(form, {DInterval(5.0, 6.0)}, none, center));
+}
+
+TEST_CASE("critical contractors: at C1's images the configuration contractor keeps the lattice and narrows three coordinates") {
+    const ClosingRegion<DInterval>& region = region_at_2();
+    REQUIRE(region.verdict == Outcome::proved);
+    const DInterval two_p = DoubleField{}.integer(4);
+    for (const ChartImage& image : chart_images(region, 0)) {
+        const ChartBox<DInterval> point = box_around(image.chart_basis, image.configuration, 0);
+        const ChartBox<DInterval> narrow = box_around(image.chart_basis, image.configuration, 1e-4);
+        const ChartBox<DInterval> wide = box_around(image.chart_basis, image.configuration, 1e-2);
+        // Wide (1e-2) in three coordinates and narrow (1e-4) in the others: where the three
+        // wide ones can serve as the manifold's normal coordinates, its shadow over the narrow
+        // three is far narrower than 1e-2. Every choice must keep the image.
+        int best = 0;
+        for (int a = 0; a < chart_dimension; ++a)
+            for (int b = a + 1; b < chart_dimension; ++b)
+                for (int c = b + 1; c < chart_dimension; ++c) {
+                    ChartBox<DInterval> box = narrow;
+                    for (const int k : {a, b, c}) box.x[k] = wide.x[k];
+                    ChartPoint x = box.x;
+                    REQUIRE(contract_to_configuration(chart_forms(box, two_p), x));
+                    int narrowed = 0;
+                    for (int k = 0; k < chart_dimension; ++k) {
+                        // The image is on the manifold (to the guess's 1e-12): it must stay.
+                        CHECK(contains(x[k] + DInterval(-1e-12, 1e-12), point.x[k]));
+                        if (width_upper(x[k]) < 0.5 * width_upper(box.x[k])) ++narrowed;
+                    }
+                    best = std::max(best, narrowed);
+                }
+        CHECK(best >= 3);
+        // The narrow box moved off the manifold by 0.05 in a2: no configuration point is left.
+        ChartBox<DInterval> moved = narrow;
+        moved.x[2] = moved.x[2] + DInterval(0.05);
+        ChartPoint y = moved.x;
+        CHECK(!contract_to_configuration(chart_forms(moved, two_p), y));
+    }
 }
 
 TEST_CASE("critical: the domain's limits are refused") {

@@ -106,10 +106,11 @@ void work(WorkQueue& queue, const BoxContext& context, long max_boxes) {
         ++queue.processed;
         ++queue.active;
         lock.unlock();
-        std::optional<BoxReason> reason =
-            over_budget ? std::optional<BoxReason>(BoxReason::undecided_budget) : classify_box(box, context);
+        const BoxDecision decision =
+            over_budget ? BoxDecision{BoxReason::undecided_budget, box} : decide_box(box, context);
+        const std::optional<BoxReason>& reason = decision.reason;
         std::array<ChartBox<DInterval>, 2> halves;
-        if (!reason) halves = split_box(box);
+        if (!reason) halves = split_box(decision.box);
         lock.lock();
         --queue.active;
         if (reason) {

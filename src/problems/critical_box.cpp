@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "superpack/problems/critical_contraction.hpp"
+
 namespace superpack {
 
 namespace {
@@ -25,27 +27,6 @@ bool certainly_longer(const std::array<I, 3>& v, const I& bound) {
     return false;
 }
 
-// Cramer's rule for the 3x3 system m y = r; nothing when m is nearly singular. Floating point:
-// the multipliers of the Lagrangian bound are guesses, any value is sound.
-std::array<double, 3> solve3(const std::array<std::array<double, 3>, 3>& m, const std::array<double, 3>& r) {
-    auto det3 = [](const std::array<std::array<double, 3>, 3>& a) {
-        return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    };
-    const double d = det3(m);
-    double scale = 0;
-    for (const auto& row : m)
-        for (double x : row) scale = std::max(scale, std::fabs(x));
-    if (!(std::fabs(d) > 1e-12 * scale * scale * scale)) return {0, 0, 0};
-    std::array<double, 3> y{};
-    for (int i = 0; i < 3; ++i) {
-        auto a = m;
-        for (int k = 0; k < 3; ++k) a[k][i] = r[k];
-        y[i] = det3(a) / d;
-    }
-    return y;
-}
-
 // The closing region test: some image's W^-1 B P^-1 lies inside its region.
 bool in_closing_region(const Basis<I>& basis, const BoxContext& context) {
     for (const ChartImage& image : *context.images) {
@@ -63,6 +44,70 @@ bool in_closing_region(const Basis<I>& basis, const BoxContext& context) {
         if (region_contains(region, unmapped)) return true;
     }
     return false;
+}
+
+int widest_coordinate(const ChartPoint& x) {
+    int widest = 0;
+    for (int k = 1; k < chart_dimension; ++k)
+        if (width_upper(x[k]) > width_upper(x[widest])) widest = k;
+    return widest;
+}
+
+double widest_width(const ChartPoint& x) { return width_upper(x[widest_coordinate(x)]); }
+
+// A contraction that removed at least this share of some coordinate's width is followed by
+// another evaluation of the smaller box (its slopes are tighter), at most `contraction_rounds`.
+constexpr double worth_another_round = 0.25;
+constexpr int contraction_rounds = 4;
+
+// Reasons 1-4 of NOTES 12.3 and the contractors: a leaf's reason, or nothing with x the box
+// contracted and `basis` an enclosure of the chart basis over the (uncontracted) box.
+std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x, Basis<I>& basis, const BoxContext& context) {
+    const I& two_p = context.two_p;
+    // Naive enclosures over the box.
+    basis = chart_basis(box.x, box.face2, box.face3, two_p);
+    const std::array<I, 3> g = chart_equations(basis, box.configuration, two_p);
+    for (const I& value : g)
+        if (!contains_zero(value)) return BoxReason::no_configuration;
+    for (const Coefficients& c : max_norm_orbit(box.configuration))
+        if (certainly_longer(combination(basis, c), basis[0][0])) return BoxReason::relabelled;
+    if (certainly_less(abs(determinant(basis)), context.volume)) return BoxReason::volume;
+
+    const ChartForms forms = chart_forms(box, two_p);
+    for (const LinearForm& equation : forms.equations)
+        if (!contains_zero(enclose(equation, box.x, forms.center))) return BoxReason::no_configuration;
+    for (int r = 0; r < 3; ++r)
+        for (int j = 0; j < 3; ++j) intersect(basis[r][j], basis[r][j], forms.basis[r][j]);
+    // On the configuration's points the Lagrangian is det (NOTES 12.3, 4.).
+    const LinearForm lagrange = lagrangian(forms);
+    const I value = enclose(lagrange, box.x, forms.center);
+    if (certainly_less(context.threshold, value) || certainly_less(value, -context.threshold)) return BoxReason::determinant;
+    if (certainly_less(abs(value), context.volume)) return BoxReason::volume;
+
+    // Contractors: the part cut off holds no configuration point (g), or only configuration
+    // points with |det| > T or |det| < V(K) (the Lagrangian, which is det there): the facts of
+    // the no_configuration, determinant and volume leaves, proved on that part as a whole.
+    if (!contract_to_configuration(forms, x)) return BoxReason::no_configuration;
+    const I low = lower_point(context.volume), high = context.threshold;
+    if (!contract_linear(lagrange, {hull(low, high), hull(-high, -low)}, x, forms.center)) return BoxReason::determinant;
+    return std::nullopt;
+}
+
+// Reasons 5-6 of NOTES 12.3 on a box whose chart basis lies in `basis`.
+std::optional<BoxReason> lattice_tests(const ChartBox<I>& box, const Basis<I>& basis, const BoxContext& context) {
+    if (in_closing_region(basis, context)) return BoxReason::closing_region;
+    const DoubleField field;
+    const I one = field.integer(1);
+    const std::array<Coefficients, 6> triples = configuration_triples(box.configuration);
+    for (const Coefficients& c : context.short_candidates) {
+        // The configuration's own vectors have norm 2 on M (and below 2 only off M, where g excludes).
+        if (std::any_of(triples.begin(), triples.end(), [&](const Coefficients& t) { return representative(t) == c; }))
+            continue;
+        const std::array<I, 3> v = combination(basis, c);
+        if (certainly_longer(v, field.integer(2))) continue;
+        if (certainly_less(half_norm_power(v, context.two_p), one)) return BoxReason::short_vector;
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -88,101 +133,37 @@ BoxContext box_context(const Rational& p, const DInterval& volume, const DInterv
     return context;
 }
 
-std::optional<BoxReason> classify_box(const ChartBox<I>& box, const BoxContext& context) {
-    const DoubleField field;
-    const I& two_p = context.two_p;
-    const I one = field.integer(1);
-    const std::array<Coefficients, 6> triples = configuration_triples(box.configuration);
+BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context) {
+    BoxDecision decision{std::nullopt, start};
+    ChartBox<I>& box = decision.box;
     try {
-        // Naive enclosures over the box.
-        Basis<I> basis = chart_basis(box.x, box.face2, box.face3, two_p);
-        std::array<I, 3> g = chart_equations(basis, box.configuration, two_p);
-        for (const I& value : g)
-            if (!contains_zero(value)) return BoxReason::no_configuration;
-        for (const Coefficients& c : max_norm_orbit(box.configuration))
-            if (certainly_longer(combination(basis, c), basis[0][0])) return BoxReason::relabelled;
-        if (certainly_less(abs(determinant(basis)), context.volume)) return BoxReason::volume;
-
-        // Mean-value forms: f(X) in f(m) + sum_k df/dx_k(X) (X_k - m_k), the derivatives by Jets.
-        std::array<I, chart_dimension> center, offset;
-        for (int k = 0; k < chart_dimension; ++k) {
-            center[k] = midpoint(box.x[k]);
-            offset[k] = box.x[k] - center[k];
-        }
-        const Basis<I> basis_center = chart_basis(center, box.face2, box.face3, two_p);
-        const std::array<I, 3> g_center = chart_equations(basis_center, box.configuration, two_p);
-        const I det_center = determinant(basis_center);
-        std::array<I, chart_dimension> det_slope;
-        std::array<std::array<I, chart_dimension>, 3> g_slope;
-        Basis<I> basis_mean = basis_center;
-        for (int k = 0; k < chart_dimension; ++k) {
-            std::array<Jet<I>, chart_dimension> seeded;
-            for (int l = 0; l < chart_dimension; ++l) seeded[l] = l == k ? variable(box.x[l]) : constant(box.x[l]);
-            const Basis<Jet<I>> jets = chart_basis(seeded, box.face2, box.face3, two_p);
-            const std::array<Jet<I>, 3> g_jets = chart_equations(jets, box.configuration, two_p);
-            det_slope[k] = determinant(jets).derivative;
-            for (int i = 0; i < 3; ++i) g_slope[i][k] = g_jets[i].derivative;
-            for (int r = 0; r < 3; ++r)
-                for (int j = 0; j < 3; ++j) basis_mean[r][j] = basis_mean[r][j] + jets[r][j].derivative * offset[k];
-        }
-        for (int i = 0; i < 3; ++i) {
-            I mean = g_center[i];
-            for (int k = 0; k < chart_dimension; ++k) mean = mean + g_slope[i][k] * offset[k];
-            if (!contains_zero(mean)) return BoxReason::no_configuration;
-        }
-        for (int r = 0; r < 3; ++r)
-            for (int j = 0; j < 3; ++j) intersect(basis[r][j], basis[r][j], basis_mean[r][j]);
-
-        // The Lagrangian det - sum lambda_i g_i equals det at every configuration point; lambda
-        // by least squares on the midpoint gradients, so that its slope over the box is the
-        // slope of det along the configuration's manifold.
-        std::array<std::array<double, 3>, 3> normal{};
-        std::array<double, 3> right{};
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j)
-                for (int k = 0; k < chart_dimension; ++k) normal[i][j] += mid_double(g_slope[i][k]) * mid_double(g_slope[j][k]);
-            for (int k = 0; k < chart_dimension; ++k) right[i] += mid_double(g_slope[i][k]) * mid_double(det_slope[k]);
-        }
-        const std::array<double, 3> lambda = solve3(normal, right);
-        I lagrangian = det_center;
-        for (int i = 0; i < 3; ++i) lagrangian = lagrangian - from_doubles(one, lambda[i], lambda[i]) * g_center[i];
-        for (int k = 0; k < chart_dimension; ++k) {
-            I slope = det_slope[k];
-            for (int i = 0; i < 3; ++i) slope = slope - from_doubles(one, lambda[i], lambda[i]) * g_slope[i][k];
-            lagrangian = lagrangian + slope * offset[k];
-        }
-        if (certainly_less(context.threshold, lagrangian) || certainly_less(lagrangian, -context.threshold))
-            return BoxReason::determinant;
-        if (certainly_less(abs(lagrangian), context.volume)) return BoxReason::volume;
-
-        if (in_closing_region(basis, context)) return BoxReason::closing_region;
-
-        for (const Coefficients& c : context.short_candidates) {
-            // The configuration's own vectors have norm 2 on M (and below 2 only off M, where g excludes).
-            if (std::any_of(triples.begin(), triples.end(), [&](const Coefficients& t) { return representative(t) == c; }))
-                continue;
-            const std::array<I, 3> v = combination(basis, c);
-            if (certainly_longer(v, field.integer(2))) continue;
-            if (certainly_less(half_norm_power(v, two_p), one)) return BoxReason::short_vector;
+        for (int round = 1;; ++round) {
+            ChartPoint x = box.x;
+            Basis<I> basis;
+            decision.reason = first_order_tests(box, x, basis, context);
+            if (decision.reason) return decision;
+            bool shrunk = false;
+            for (int k = 0; k < chart_dimension; ++k)
+                shrunk = shrunk || width_upper(x[k]) < (1 - worth_another_round) * width_upper(box.x[k]);
+            if (!shrunk || round == contraction_rounds) {
+                decision.reason = lattice_tests(box, basis, context);
+                box.x = x;
+                break;
+            }
+            box.x = x;
         }
     } catch (const std::domain_error&) {
         // A power's contract refused an enclosure (it cannot on this chart, where every base of
         // a fractional power is a coordinate or a sum in [1, 3]): split, and at the floor undecided.
-        double widest = 0;
-        for (const I& x : box.x) widest = std::max(widest, width_upper(x));
-        if (widest < context.min_width) return BoxReason::undecided_contract;
-        return std::nullopt;
+        if (widest_width(box.x) < context.min_width) decision.reason = BoxReason::undecided_contract;
+        return decision;
     }
-    double widest = 0;
-    for (const I& x : box.x) widest = std::max(widest, width_upper(x));
-    if (widest < context.min_width) return BoxReason::undecided_width;
-    return std::nullopt;
+    if (!decision.reason && widest_width(box.x) < context.min_width) decision.reason = BoxReason::undecided_width;
+    return decision;
 }
 
 std::array<ChartBox<I>, 2> split_box(const ChartBox<I>& box) {
-    int widest = 0;
-    for (int k = 1; k < chart_dimension; ++k)
-        if (width_upper(box.x[k]) > width_upper(box.x[widest])) widest = k;
+    const int widest = widest_coordinate(box.x);
     std::array<ChartBox<I>, 2> halves{box, box};
     const I middle = midpoint(box.x[widest]);
     halves[0].x[widest] = hull(lower_point(box.x[widest]), middle);

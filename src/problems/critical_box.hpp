@@ -1,5 +1,6 @@
 // The decision for one box of `superpack critical` (NOTES.md 12.3): each test proves its reason
-// for every point of the box, or the box is split.
+// for every point of the box, or the box is contracted (the part cut off proved free of what a
+// leaf must decide) and split.
 #pragma once
 #include <optional>
 #include <vector>
@@ -22,8 +23,12 @@ BoxContext box_context(const Rational& p, const DInterval& volume, const DInterv
                        const std::vector<ClosingRegion<DInterval>>& regions, const std::vector<ChartImage>& images,
                        double min_width);
 
-// The reason of a leaf, or nothing when the box must be split.
-std::optional<BoxReason> classify_box(const ChartBox<DInterval>& box, const BoxContext& context);
+// A leaf's reason, or nothing when `box` (the given box after the contractors) must be split.
+struct BoxDecision {
+    std::optional<BoxReason> reason;
+    ChartBox<DInterval> box;
+};
+BoxDecision decide_box(const ChartBox<DInterval>& box, const BoxContext& context);
 
 // The two halves of the box along its widest coordinate.
 std::array<ChartBox<DInterval>, 2> split_box(const ChartBox<DInterval>& box);
