@@ -37,6 +37,18 @@ Real power_at(mpfr_srcptr e, const Real& y) {
         if (!positive(y)) throw std::domain_error("0^y with y possibly <= 0");
         return point;
     }
+    // A point exponent n = 1, ..., 64 (2p at p = 2 is 4): e^n rounded down and up by MPFR,
+    // as tight as the producer's products (a stored enclosure must contain the checker's).
+    if (mpfr_equal_p(y.lo(), y.hi()) && mpfr_integer_p(y.lo()) && mpfr_cmp_ui(y.lo(), 1) >= 0 && mpfr_cmp_ui(y.lo(), 64) <= 0) {
+        const unsigned long n = mpfr_get_ui(y.lo(), MPFR_RNDN);
+        mpfr_t down, up;
+        mpfr_inits2(y.precision(), down, up, static_cast<mpfr_ptr>(nullptr));
+        mpfr_pow_ui(down, e, n, MPFR_RNDD);
+        mpfr_pow_ui(up, e, n, MPFR_RNDU);
+        mpfi_interv_fr(point.get(), down, up);
+        mpfr_clears(down, up, static_cast<mpfr_ptr>(nullptr));
+        return point;
+    }
     mpfi_set_fr(point.get(), e);
     return exp(y * log(point));
 }

@@ -112,6 +112,34 @@ TEMPLATE_TEST_CASE("x^y encloses the true range when the base reaches 0, unbound
     CHECK_THROWS_AS(pow_nonneg(box(field, -1, 1), box(field, 2, 2)), std::domain_error);
 }
 
+TEMPLATE_TEST_CASE("x^n and x^(1/2), x^(1/4) by products and sqrt: enclosures, exact at dyadic points, the general path elsewhere",
+                   "", Binary64, Arb128) {
+    const TestType field;
+    // Bases from subnormal to huge, reaching 0 and not; every exponent of the fast path.
+    const std::vector<std::pair<double, double>> bases{{0, 1},       {0x1p-1060, 0x1p-1050}, {0.3, 0.7},
+                                                       {1.5, 1.5},   {0.1, 0.1},             {3, 1e30},
+                                                       {0x1p-20, 2}, {16, 16}};
+    for (const double n : {1.0, 2.0, 3.0, 4.0, 5.0, 7.0, 8.0, 0.5, 0.25})
+        for (const auto& [lo, hi] : bases) {
+            const auto x = box(field, lo, hi), y = box(field, n, n);
+            INFO("[" << lo << ", " << hi << "]^" << n);
+            const auto power = pow_nonneg(x, y);
+            for (double a : points_of(lo, hi)) CHECK(holds_power(power, a, n));
+            CHECK(certainly_nonnegative(power));
+        }
+    // Exact where the true power is a double: 1.5^4 = 5.0625, 16^(1/4) = 2, 16^(1/2) = 4.
+    CHECK(width_upper(pow_nonneg(box(field, 1.5, 1.5), box(field, 4, 4))) == 0);
+    CHECK(contains(pow_nonneg(box(field, 1.5, 1.5), box(field, 4, 4)), from_doubles(field.integer(0), 5.0625, 5.0625)));
+    CHECK(width_upper(pow_nonneg(box(field, 16, 16), box(field, 0.25, 0.25))) == 0);
+    CHECK(contains(pow_nonneg(box(field, 16, 16), box(field, 0.5, 0.5)), field.integer(4)));
+    // Not a point, or another point: the general path, still an enclosure (9 is past the table).
+    for (const auto& [y_lo, y_hi] : std::vector<std::pair<double, double>>{{4, 4.5}, {9, 9}, {0.75, 0.75}, {3.5, 3.5}}) {
+        const auto power = pow_nonneg(box(field, 0.3, 1.7), box(field, y_lo, y_hi));
+        for (double a : points_of(0.3, 1.7))
+            for (double b : points_of(y_lo, y_hi)) CHECK(holds_power(power, a, b));
+    }
+}
+
 TEMPLATE_TEST_CASE("sign(x)|x|^y across 0 is bounded for y >= 0 and the whole line for y < 0", "", Binary64, Arb128) {
     const TestType field;
     for (const auto& [y_lo, y_hi] : std::vector<std::pair<double, double>>{{-0.5, -0.5}, {-0.5, 0.5}, {0, 0}, {0.5, 0.5}, {0, 2}}) {
