@@ -3,38 +3,11 @@
 // speedup of 1.8 (issue 13), reported as the ratio of the two wall times. The leaves must be
 // the same on both (the order of the queue does not change a box's reason).
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 
 #include "superpack/problems/critical.hpp"
 
 using namespace superpack;
-
-namespace {
-
-// The chart box of half-width h around a chart basis (as in tests/test_critical.cpp).
-ChartBox<DInterval> box_around(const DoubleBasis& b, MinkowskiCase configuration, double h) {
-    ChartBox<DInterval> box;
-    box.configuration = configuration;
-    const DInterval like(0.0);
-    auto clipped = [&](double centre, double lo, double hi) {
-        return from_doubles(like, std::max(lo, centre - h), std::min(hi, centre + h));
-    };
-    box.x[0] = clipped(b[0][1] / b[0][0], 0, 1);
-    box.x[1] = clipped(b[0][1] > 0 ? b[0][2] / b[0][1] : 0, 0, 1);
-    for (int k = 1; k < 3; ++k) {
-        int axis = 0;
-        for (int j = 1; j < 3; ++j)
-            if (std::fabs(b[k][j]) > std::fabs(b[k][axis])) axis = j;
-        (k == 1 ? box.face2 : box.face3) = 2 * axis + (b[k][axis] < 0 ? 1 : 0);
-        const double scale = std::fabs(b[k][axis]);
-        box.x[2 * k] = clipped(b[k][axis == 0 ? 1 : 0] / scale, -1, 1);
-        box.x[2 * k + 1] = clipped(b[k][axis == 2 ? 1 : 2] / scale, -1, 1);
-    }
-    return box;
-}
-
-}  // namespace
 
 int main() {
     const DoubleField field;
@@ -45,7 +18,7 @@ int main() {
     CriticalOptions options;
     options.p = p;
     for (const ChartImage& image : chart_images(region, 0))
-        options.start_boxes.push_back(box_around(image.chart_basis, image.configuration, 5e-5));
+        options.start_boxes.push_back(chart_box_around(image.chart_basis, image.configuration, 5e-5));
     CriticalResult<DInterval> results[2];
     double seconds[2];
     for (int threads = 1; threads <= 2; ++threads) {

@@ -112,6 +112,48 @@ TEST_CASE("critical with a budget too small: the whole answer printed, status un
     CHECK(table.out.find("(not proved)") != std::string::npos);
 }
 
+TEST_CASE("critical --merge: sums shards i/n, and refuses a shard missing, repeated, of another T or not a shard") {
+    const Scratch scratch;
+    const std::string dir = scratch.path + "/";
+    // Two shards of 2, each stopped by its budget: the merge is undecided (exit 4) with the leaves summed.
+    for (const char* shard : {"0/2", "1/2"}) {
+        const std::string name = std::string("shard") + shard[0] + ".json";
+        CHECK(run(std::string("critical --p 2 --gap 0.01 --max-boxes 30 --json --shard ") + shard + " > " + dir + name).status == 4);
+    }
+    const Run merged = run("critical --merge " + dir + "shard0.json " + dir + "shard1.json --json");
+    INFO(merged.err);
+    CHECK(merged.status == 4);
+    const auto document = nlohmann::json::parse(merged.out);
+    const auto first = nlohmann::json::parse(std::ifstream(dir + "shard0.json"));
+    const auto second = nlohmann::json::parse(std::ifstream(dir + "shard1.json"));
+    CHECK(document["status"] == "undecided");
+    CHECK(document["processed"].get<long>() == first["processed"].get<long>() + second["processed"].get<long>());
+    CHECK(document["boxes"]["undecided_budget"].get<long>() ==
+          first["boxes"]["undecided_budget"].get<long>() + second["boxes"]["undecided_budget"].get<long>());
+    CHECK(document["start_boxes"].get<long>() == 168);
+    CHECK(document["shard"]["count"] == 1);
+    CHECK(document["threshold"] == first["threshold"]);
+    CHECK(document["message"].get<std::string>().find("2 of 2 shards undecided") != std::string::npos);
+    check_error("critical --merge " + dir + "shard0.json", 2, "shards missing of 2: 1");
+    check_error("critical --merge " + dir + "shard0.json " + dir + "shard0.json", 2, "given twice");
+    check_error("critical --p 2 --merge " + dir + "shard0.json", 2, "give no --p");
+    check_error("critical --merge " + dir + "nothing.json", 2, "cannot open");
+    check_error("critical --merge /dev/null", 2, "not a regular file");
+    // Another gap gives another T: the shard does not belong to this merge.
+    CHECK(run("critical --p 2 --gap 0.02 --max-boxes 30 --json --shard 1/2 > " + dir + "other.json").status == 4);
+    check_error("critical --merge " + dir + "shard0.json " + dir + "other.json", 2, "another p or gap");
+    // A T edited in a shard file no longer matches the T recomputed at its p and gap.
+    auto edited = first;
+    edited["threshold"]["lo"] = "0.1";
+    std::ofstream(dir + "edited.json") << edited.dump();
+    const Run other_threshold = run("critical --merge " + dir + "edited.json " + dir + "shard1.json");
+    CHECK(other_threshold.status == 2);
+    CHECK(other_threshold.out.empty());
+    CHECK(other_threshold.err.find("has another T") != std::string::npos);
+    std::ofstream(dir + "density.json") << run("density --family C0 --p 1.5 --json").out;
+    check_error("critical --merge " + dir + "density.json", 2, "not a document of superpack critical");
+}
+
 TEST_CASE("density --json: one document with the contract's names and widths") {
     const Run result = run("density --family C0 --p 1.5 --json");
     REQUIRE(result.status == 0);

@@ -18,29 +18,6 @@ const CriticalReference<DInterval>& reference_at_2() {
     return reference;
 }
 
-// The chart box of half-width h around a chart basis (b1 in the cone, b1[0] its largest entry).
-ChartBox<DInterval> box_around(const DoubleBasis& b, MinkowskiCase configuration, double h) {
-    ChartBox<DInterval> box;
-    box.configuration = configuration;
-    const DInterval like(0.0);
-    auto clipped = [&](double centre, double lo, double hi) {
-        return from_doubles(like, std::max(lo, centre - h), std::min(hi, centre + h));
-    };
-    box.x[0] = clipped(b[0][1] / b[0][0], 0, 1);
-    box.x[1] = clipped(b[0][1] > 0 ? b[0][2] / b[0][1] : 0, 0, 1);
-    for (int k = 1; k < 3; ++k) {
-        int axis = 0;
-        for (int j = 1; j < 3; ++j)
-            if (std::fabs(b[k][j]) > std::fabs(b[k][axis])) axis = j;
-        const int face = 2 * axis + (b[k][axis] < 0 ? 1 : 0);
-        const double scale = std::fabs(b[k][axis]);
-        (k == 1 ? box.face2 : box.face3) = face;
-        box.x[2 * k] = clipped(b[k][axis == 0 ? 1 : 0] / scale, -1, 1);
-        box.x[2 * k + 1] = clipped(b[k][axis == 2 ? 1 : 2] / scale, -1, 1);
-    }
-    return box;
-}
-
 const ClosingRegion<DInterval>& region_at_2() {
     static const ClosingRegion<DInterval> region =
         certify_closing_region(*reference_at_2().optimum, DoubleField{}.rational(Rational(2)), 1e-2, 6);
@@ -143,7 +120,7 @@ TEST_CASE("critical at p = 2: C1's images lie in the chart on the configuration,
     const double det_star = mid_double(region.determinant);
     for (const ChartImage& image : images) {
         CHECK(image.configuration == MinkowskiCase::a3);  // C1's contacts are an A3 set, no W set
-        const ChartBox<DInterval> box = box_around(image.chart_basis, image.configuration, 0);
+        const ChartBox<DInterval> box = chart_box_around(image.chart_basis, image.configuration, 0);
         std::array<DInterval, chart_dimension> x = box.x;
         const Basis<DInterval> b = chart_basis(x, box.face2, box.face3, two_p);
         for (const DInterval& g : chart_equations(b, image.configuration, two_p)) CHECK(std::fabs(mid_double(g)) < 1e-9);
@@ -188,7 +165,7 @@ TEST_CASE("critical at p = 2 around C1's images: every box closes (det bound or 
     CriticalOptions options;
     options.p = Rational(2);
     for (const ChartImage& image : chart_images(region, 0))
-        options.start_boxes.push_back(box_around(image.chart_basis, image.configuration, 1e-5));
+        options.start_boxes.push_back(chart_box_around(image.chart_basis, image.configuration, 1e-5));
     const CriticalResult<DInterval> whole = critical_bound(reference_at_2(), options);
     INFO(whole.message);
     REQUIRE(whole.status == Outcome::proved);
@@ -258,9 +235,9 @@ TEST_CASE("critical contractors: at C1's images the configuration contractor kee
     REQUIRE(region.verdict == Outcome::proved);
     const DInterval two_p = DoubleField{}.integer(4);
     for (const ChartImage& image : chart_images(region, 0)) {
-        const ChartBox<DInterval> point = box_around(image.chart_basis, image.configuration, 0);
-        const ChartBox<DInterval> narrow = box_around(image.chart_basis, image.configuration, 1e-4);
-        const ChartBox<DInterval> wide = box_around(image.chart_basis, image.configuration, 1e-2);
+        const ChartBox<DInterval> point = chart_box_around(image.chart_basis, image.configuration, 0);
+        const ChartBox<DInterval> narrow = chart_box_around(image.chart_basis, image.configuration, 1e-4);
+        const ChartBox<DInterval> wide = chart_box_around(image.chart_basis, image.configuration, 1e-2);
         // Wide (1e-2) in three coordinates and narrow (1e-4) in the others: where the three
         // wide ones can serve as the manifold's normal coordinates, its shadow over the narrow
         // three is far narrower than 1e-2. Every choice must keep the image.

@@ -1,9 +1,12 @@
 // superpack critical --p P [--gap G] [--threads N] [--shard i/n] [--max-boxes M] [--json]
-// A certified upper bound on the lattice packing density at p (problems/critical.hpp, NOTES 12).
+// superpack critical --merge FILE... [--json]
+// A certified upper bound on the lattice packing density at p (problems/critical.hpp, NOTES 12),
+// run whole or in shards whose JSON documents --merge sums into the whole domain's result.
 #include <chrono>
 #include <memory>
 
 #include "common.hpp"
+#include "critical_merge.hpp"
 #include "superpack/arith/enclosure_json.hpp"
 #include "superpack/problems/critical.hpp"
 
@@ -13,6 +16,7 @@ namespace {
 
 struct CriticalCommandOptions {
     std::string p, gap = "0", shard = "0/1";
+    std::vector<std::string> merge;
     int threads = 1;
     long max_boxes = 50000000;
     bool json = false;
@@ -107,7 +111,59 @@ void print_table(const CriticalResult<DInterval>& result, const CriticalOptions&
     std::cout << "time         " << result.seconds << " s on " << options.threads << " threads\n";
 }
 
+void print_result(const CriticalResult<DInterval>& result, const CriticalOptions& options, const std::string& p_text,
+                  long max_boxes, bool json) {
+    if (json) {
+        const DoubleField field;
+        Json document = header_json("critical", field, 15);
+        document["p"] = p_text;
+        document["p_exact"] = rational_text(options.p);
+        document["gap"] = rational_text(options.gap);
+        document["threads"] = options.threads;
+        document["max_boxes"] = max_boxes;
+        // What a merge needs: the shard, the domain's size, and T.
+        document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes}};
+        document.update(result_json(result));
+        print_json(document);
+    } else {
+        print_table(result, options);
+    }
+    if (result.status != Outcome::proved) throw Failure(exit_undecided, "critical: undecided: " + result.message);
+}
+
+// --merge: the setup recomputed from the shards' p and gap (each shard's T must print as its
+// T does), then the shards' leaves summed.
+void run_merge(const CriticalCommandOptions& command) {
+    if (!command.p.empty() || command.shard != "0/1")
+        throw InputError("critical --merge: takes p, the gap and the shards from the files; give no --p or --shard");
+    std::vector<ShardDocument> documents;
+    std::vector<ShardSummary> summaries;
+    for (const std::string& path : command.merge) {
+        documents.push_back(read_shard_document(path));
+        summaries.push_back(documents.back().summary);
+        if (documents.back().p_exact != documents.front().p_exact || documents.back().gap != documents.front().gap)
+            throw InputError("critical --merge: '" + path + "' has another p or gap than '" + command.merge.front() + "'");
+    }
+    require_shard_cover(summaries);
+    CriticalOptions options;
+    options.p = parse_p(documents.front().p_exact, "p_exact of " + command.merge.front());
+    options.gap = parse_number(documents.front().gap, "gap of " + command.merge.front());
+    require_critical_domain(options.p, options.gap);
+    std::cerr << "critical --merge: certifying the densest lattice at p (best) to recompute T\n";
+    const CriticalResult<DInterval> setup = critical_setup(critical_reference(options.p, DoubleField{}), options);
+    const Json threshold = enclosure_json(setup.threshold);
+    for (std::size_t k = 0; k < documents.size(); ++k)
+        if (documents[k].threshold != threshold)
+            throw InputError("critical --merge: '" + command.merge[k] + "' has another T than this superpack computes at its p and gap");
+    print_result(merge_shards(setup, summaries), options, documents.front().p_exact, 0, command.json);
+}
+
 int run(const CriticalCommandOptions& command) {
+    if (!command.merge.empty()) {
+        run_merge(command);
+        return exit_ok;
+    }
+    if (command.p.empty()) throw InputError("critical: --p is required (or --merge FILE...)");
     CriticalOptions options;
     options.p = parse_p(command.p);
     options.gap = parse_number(command.gap, "--gap");
@@ -129,22 +185,7 @@ int run(const CriticalCommandOptions& command) {
                                                progress.counts[static_cast<int>(BoxReason::undecided_budget)]
                   << " undecided\n";
     };
-    const CriticalResult<DInterval> result = critical_bound(reference, options);
-    if (command.json) {
-        Json document = header_json("critical", field, 15);
-        document["p"] = command.p;
-        document["p_exact"] = rational_text(options.p);
-        document["gap"] = rational_text(options.gap);
-        document["threads"] = options.threads;
-        document["max_boxes"] = options.max_boxes;
-        // What a later merge needs (issue 13 item 3): the shard, the domain's size, and T.
-        document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes}};
-        document.update(result_json(result));
-        print_json(document);
-    } else {
-        print_table(result, options);
-    }
-    if (result.status != Outcome::proved) throw Failure(exit_undecided, "critical: undecided: " + result.message);
+    print_result(critical_bound(reference, options), options, command.p, options.max_boxes, command.json);
     return exit_ok;
 }
 
@@ -152,7 +193,7 @@ void add_critical(CLI::App& app) {
     auto options = std::make_shared<CriticalCommandOptions>();
     CLI::App* command = app.add_subcommand(
         "critical", "A certified upper bound on the lattice packing density at p (branch and bound over Minkowski's configurations)");
-    command->add_option("--p", options->p, "deformation parameter 1/2 < p <= 10: a decimal or a fraction")->required();
+    command->add_option("--p", options->p, "deformation parameter 1/2 < p <= 10: a decimal or a fraction (required unless --merge)");
     command->add_option("--gap", options->gap,
                         "relative gap 0 <= G < 1/2: prove |det| >= (1 - G) |det| of the best lattice (default 0)");
     command->add_option("--threads", options->threads, "worker threads, 1 to " + std::to_string(max_threads) + " (default 1)");
@@ -162,6 +203,9 @@ void add_critical(CLI::App& app) {
     command->add_option("--max-boxes", options->max_boxes,
                         "boxes evaluated at most, 1 to " + std::to_string(max_box_budget) +
                             " (default 5e7); the rest stay undecided");
+    command->add_option("--merge", options->merge,
+                        "FILE...: the --json documents of shards 0/n to n-1/n (same p and gap), summed into the whole "
+                        "domain's result (proved iff every shard is; each file at most 1 MiB)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
 }

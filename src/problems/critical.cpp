@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -50,6 +51,29 @@ std::vector<ChartBox<DInterval>> top_level_domain() {
                     boxes.push_back(box);
                 }
     return boxes;
+}
+
+ChartBox<DInterval> chart_box_around(const DoubleBasis& basis, MinkowskiCase configuration, double half_width) {
+    ChartBox<DInterval> box;
+    box.configuration = configuration;
+    const DInterval like(0.0);
+    // A centre off the range by rounding (a guess of 1 + 1e-16) is moved onto it first.
+    auto clipped = [&](double centre, double lo, double hi) {
+        centre = std::min(hi, std::max(lo, centre));
+        return from_doubles(like, std::max(lo, centre - half_width), std::min(hi, centre + half_width));
+    };
+    box.x[0] = clipped(basis[0][1] / basis[0][0], 0, 1);
+    box.x[1] = clipped(basis[0][1] > 0 ? basis[0][2] / basis[0][1] : 0, 0, 1);
+    for (int k = 1; k < 3; ++k) {
+        int axis = 0;
+        for (int j = 1; j < 3; ++j)
+            if (std::fabs(basis[k][j]) > std::fabs(basis[k][axis])) axis = j;
+        (k == 1 ? box.face2 : box.face3) = 2 * axis + (basis[k][axis] < 0 ? 1 : 0);
+        const double scale = std::fabs(basis[k][axis]);
+        box.x[2 * k] = clipped(basis[k][axis == 0 ? 1 : 0] / scale, -1, 1);
+        box.x[2 * k + 1] = clipped(basis[k][axis == 2 ? 1 : 2] / scale, -1, 1);
+    }
+    return box;
 }
 
 void require_critical_domain(const Rational& p, const Rational& gap) {
@@ -126,8 +150,7 @@ void work(WorkQueue& queue, const BoxContext& context, long max_boxes) {
 
 }  // namespace
 
-CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& reference, const CriticalOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
+CriticalResult<DInterval> critical_setup(const CriticalReference<DInterval>& reference, const CriticalOptions& options) {
     const DoubleField field;
     CriticalResult<DInterval> result;
     result.reference = reference;
@@ -149,7 +172,14 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
         }
     }
     result.threshold = threshold;
+    result.upper_phi = upper_point(result.volume / threshold);
+    result.relative_gap = upper_point(result.upper_phi / lower_point(reference.phi) - field.integer(1));
+    return result;
+}
 
+CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& reference, const CriticalOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    CriticalResult<DInterval> result = critical_setup(reference, options);
     WorkQueue queue;
     const std::vector<ChartBox<DInterval>> domain = options.start_boxes.empty() ? top_level_domain() : options.start_boxes;
     for (std::size_t k = 0; k < domain.size(); ++k)
@@ -158,7 +188,8 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
     result.start_boxes = static_cast<long>(queue.stack.size());
     std::reverse(queue.stack.begin(), queue.stack.end());
 
-    const BoxContext context = box_context(options.p, result.volume, threshold, result.regions, result.images, options.min_width);
+    const BoxContext context =
+        box_context(options.p, result.volume, result.threshold, result.regions, result.images, options.min_width);
     std::vector<std::thread> threads;
     for (int t = 0; t < std::max(1, options.threads); ++t)
         threads.emplace_back([&] { work(queue, context, options.max_boxes); });
@@ -186,8 +217,6 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
     long undecided = 0;
     for (int r = 0; r < box_reasons; ++r)
         if (!decided(static_cast<BoxReason>(r))) undecided += result.counts[r];
-    result.upper_phi = upper_point(result.volume / threshold);
-    result.relative_gap = upper_point(result.upper_phi / lower_point(reference.phi) - field.integer(1));
     if (undecided == 0) {
         result.status = Outcome::proved;
         result.message = result.partial_domain
@@ -198,6 +227,50 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
+}
+
+void require_shard_cover(const std::vector<ShardSummary>& shards) {
+    if (shards.empty()) throw InputError("critical --merge: no shard results given");
+    const int count = shards.front().count;
+    std::vector<bool> seen(static_cast<std::size_t>(count), false);
+    for (const ShardSummary& shard : shards) {
+        if (shard.count != count)
+            throw InputError("critical --merge: shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
+                             " is not one of " + std::to_string(count) + " shards");
+        if (seen[static_cast<std::size_t>(shard.index)])
+            throw InputError("critical --merge: shard " + std::to_string(shard.index) + "/" + std::to_string(count) + " given twice");
+        seen[static_cast<std::size_t>(shard.index)] = true;
+    }
+    std::string missing;
+    for (int k = 0; k < count; ++k)
+        if (!seen[static_cast<std::size_t>(k)]) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+    if (!missing.empty())
+        throw InputError("critical --merge: shards missing of " + std::to_string(count) + ": " + missing.substr(0, 200));
+}
+
+CriticalResult<DInterval> merge_shards(CriticalResult<DInterval> setup, const std::vector<ShardSummary>& shards) {
+    require_shard_cover(shards);
+    const int count = shards.front().count;
+    std::vector<int> unproved;
+    setup.partial_domain = false;
+    setup.start_boxes = 0;
+    for (const ShardSummary& shard : shards) {
+        if (!shard.proved) unproved.push_back(shard.index);
+        for (int r = 0; r < box_reasons; ++r) setup.counts[r] += shard.counts[r];
+        setup.processed += shard.processed;
+        setup.start_boxes += shard.start_boxes;
+        setup.seconds += shard.seconds;
+    }
+    if (!unproved.empty()) {
+        setup.status = Outcome::undecided;
+        setup.message = std::to_string(unproved.size()) + " of " + std::to_string(count) +
+                        " shards undecided (the first: " + std::to_string(unproved.front()) + "), so no bound is proved";
+    } else {
+        setup.status = Outcome::proved;
+        setup.message = "every box of all " + std::to_string(count) +
+                        " shards is decided: every lattice packing of K has |det| >= T, so density <= V(K) / T";
+    }
+    return setup;
 }
 
 }  // namespace superpack

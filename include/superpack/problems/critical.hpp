@@ -60,6 +60,11 @@ struct ChartBox {
 constexpr int top_level_boxes = 2 * (cube_faces * (cube_faces + 1) / 2) * 4;
 std::vector<ChartBox<DInterval>> top_level_domain();
 
+// The chart box of half-width h around a basis already in the chart's normal form (b1 in the
+// cone, b1[0] its largest entry; v2, v3 on the faces of their largest entries), clipped to the
+// chart's ranges: where tests and benchmarks start, around the images of a minimiser.
+ChartBox<DInterval> chart_box_around(const DoubleBasis& basis, MinkowskiCase configuration, double half_width);
+
 // The lattice the bound is measured against: the densest lattice packing superpack certifies at
 // p (`best`), and its certified local optimality when there is one.
 template <class I>
@@ -133,6 +138,28 @@ struct CriticalResult {
 void require_critical_domain(const Rational& p, const Rational& gap);
 
 CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& reference, const CriticalOptions& options);
+
+// What a run fixes before its first box: V(K), the closing regions and their images, T, the
+// upper bound and the gap (no boxes, undecided). Deterministic in p and the gap, so --merge
+// recomputes it and requires each shard's T to be the same.
+CriticalResult<DInterval> critical_setup(const CriticalReference<DInterval>& reference, const CriticalOptions& options);
+
+// One shard's result as `critical --merge` reads it back (its T already matched the setup's).
+struct ShardSummary {
+    int index = 0, count = 1;
+    bool proved = false;
+    std::array<long, box_reasons> counts{};
+    long processed = 0, start_boxes = 0;
+    double seconds = 0;
+};
+
+// Shards i/n, each i in 0..n-1 exactly once, or an InputError naming one missing, repeated or
+// of another n.
+void require_shard_cover(const std::vector<ShardSummary>& shards);
+
+// The whole domain's result from shards that pass require_shard_cover: proved iff every shard
+// is, with the leaves, boxes and the shards' wall seconds summed.
+CriticalResult<DInterval> merge_shards(CriticalResult<DInterval> setup, const std::vector<ShardSummary>& shards);
 
 // The images of a closing region in the chart (exposed for the tests).
 std::vector<ChartImage> chart_images(const ClosingRegion<DInterval>& region, std::size_t index);
