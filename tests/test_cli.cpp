@@ -132,6 +132,11 @@ TEST_CASE("critical --merge: sums shards i/n, and refuses a shard missing, repea
           first["boxes"]["undecided_budget"].get<long>() + second["boxes"]["undecided_budget"].get<long>());
     CHECK(document["start_boxes"].get<long>() == 168);
     CHECK(document["shard"]["count"] == 1);
+    CHECK(document["merged"] == true);
+    CHECK_FALSE(document.contains("threads"));
+    const Run table = run("critical --merge " + dir + "shard0.json " + dir + "shard1.json");
+    CHECK(table.status == 4);
+    CHECK(table.out.find("the shards' wall times summed") != std::string::npos);
     CHECK(document["threshold"] == first["threshold"]);
     CHECK(document["message"].get<std::string>().find("2 of 2 shards undecided") != std::string::npos);
     check_error("critical --merge " + dir + "shard0.json", 2, "shards missing of 2: 1");

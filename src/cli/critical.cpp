@@ -84,7 +84,7 @@ Json result_json(const CriticalResult<DInterval>& result) {
             {"seconds", result.seconds}};
 }
 
-void print_table(const CriticalResult<DInterval>& result, const CriticalOptions& options) {
+void print_table(const CriticalResult<DInterval>& result, const CriticalOptions& options, bool merged) {
     const DecimalEnclosure lower = to_decimal(result.reference.phi, 17);
     const DecimalEnclosure upper = to_decimal(result.upper_phi, 17);
     const DecimalEnclosure gap = to_decimal(result.relative_gap, 3);
@@ -108,25 +108,33 @@ void print_table(const CriticalResult<DInterval>& result, const CriticalOptions&
         std::cout << "region       " << (region.verdict == Outcome::proved ? "proved" : "undecided") << ": " << region.reason
                   << (region.verdict == Outcome::proved ? ", radius " + std::to_string(region.radius) : std::string()) << ", "
                   << result.images.size() << " images in the chart\n";
-    std::cout << "time         " << result.seconds << " s on " << options.threads << " threads\n";
+    if (merged)
+        std::cout << "time         " << result.seconds << " s, the shards' wall times summed\n";
+    else
+        std::cout << "time         " << result.seconds << " s on " << options.threads << (options.threads == 1 ? " thread\n" : " threads\n");
 }
 
+// A merged result (merged true) has no threads or budget of its own: its time is the shards'.
 void print_result(const CriticalResult<DInterval>& result, const CriticalOptions& options, const std::string& p_text,
-                  long max_boxes, bool json) {
+                  bool merged, bool json) {
     if (json) {
         const DoubleField field;
         Json document = header_json("critical", field, 15);
         document["p"] = p_text;
         document["p_exact"] = rational_text(options.p);
         document["gap"] = rational_text(options.gap);
-        document["threads"] = options.threads;
-        document["max_boxes"] = max_boxes;
+        if (merged) {
+            document["merged"] = true;
+        } else {
+            document["threads"] = options.threads;
+            document["max_boxes"] = options.max_boxes;
+        }
         // What a merge needs: the shard, the domain's size, and T.
         document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes}};
         document.update(result_json(result));
         print_json(document);
     } else {
-        print_table(result, options);
+        print_table(result, options, merged);
     }
     if (result.status != Outcome::proved) throw Failure(exit_undecided, "critical: undecided: " + result.message);
 }
@@ -155,7 +163,7 @@ void run_merge(const CriticalCommandOptions& command) {
     for (std::size_t k = 0; k < documents.size(); ++k)
         if (documents[k].threshold != threshold)
             throw InputError("critical --merge: '" + command.merge[k] + "' has another T than this superpack computes at its p and gap");
-    print_result(merge_shards(setup, summaries), options, documents.front().p_exact, 0, command.json);
+    print_result(merge_shards(setup, summaries), options, documents.front().p_exact, true, command.json);
 }
 
 int run(const CriticalCommandOptions& command) {
@@ -185,7 +193,7 @@ int run(const CriticalCommandOptions& command) {
                                                progress.counts[static_cast<int>(BoxReason::undecided_budget)]
                   << " undecided\n";
     };
-    print_result(critical_bound(reference, options), options, command.p, options.max_boxes, command.json);
+    print_result(critical_bound(reference, options), options, command.p, false, command.json);
     return exit_ok;
 }
 
