@@ -21,61 +21,17 @@
 // contact_vectors, volume, determinant, phi}; inputs {p, p_decimal}; proof {kind, kkt {kind,
 // status, box, root}, second_order {rho}, lattice {kind, coefficient_bound, contacts
 // [{coefficients}]}}.
-#include <set>
 
+#include "checker/claim_parts.hpp"
 #include "checker/family_verdict.hpp"
 #include "checker/kkt_point.hpp"
-#include "checker/limits.hpp"
 #include "checker/literature.hpp"
+#include "checker/positive_definite.hpp"
 #include "checker/render.hpp"
 
 namespace superpack_checker {
 
 namespace {
-
-std::vector<Triple> read_contact_pairs(Context& context, const Json& data) {
-    const std::string path = "claim.data.contact_pairs";
-    const Json& list = context.member(data, "contact_pairs", "claim.data");
-    if (!list.is_array() || list.empty()) context.malformed(path, "expected a non-empty array of triples");
-    if (list.size() > max_contact_pairs)
-        context.malformed(path, std::to_string(list.size()) + " contact pairs exceed the limit of " +
-                                    std::to_string(max_contact_pairs) + " (max_contact_pairs)");
-    std::vector<Triple> contacts;
-    std::set<Triple> pairs;
-    for (std::size_t k = 0; k < list.size(); ++k) {
-        const std::string at = path + "[" + std::to_string(k) + "]";
-        const Triple t = read_triple(context, list[k], at);
-        // One triple per +-pair, as the lattice checks list them: c and -c give the same system
-        // (the gradient of the norm is odd), so a claim could otherwise differ and still verify.
-        context.require(canonical(t), at, "not the triple of its +-pair whose first nonzero coefficient is positive");
-        context.require(pairs.insert(t).second, at, "a contact pair listed twice");
-        contacts.push_back(t);
-    }
-    return contacts;
-}
-
-// LDL^T of the symmetric interval matrix m (its lower triangle): each symmetric matrix with
-// entries in m has its exact pivots inside the interval pivots, so all of them certainly > 0
-// proves every such matrix positive definite. Returns the first pivot not certainly positive,
-// or m.size().
-std::size_t first_unproved_pivot(const std::vector<std::vector<Real>>& m) {
-    const std::size_t n = m.size();
-    const mpfr_prec_t precision = m[0][0].precision();
-    std::vector<std::vector<Real>> l(n, std::vector<Real>(n, Real(precision)));
-    std::vector<Real> d;
-    for (std::size_t j = 0; j < n; ++j) {
-        Real pivot = m[j][j];
-        for (std::size_t k = 0; k < j; ++k) pivot = pivot - l[j][k] * l[j][k] * d[k];
-        if (!positive(pivot)) return j;
-        d.push_back(pivot);
-        for (std::size_t i = j + 1; i < n; ++i) {
-            Real sum = m[i][j];
-            for (std::size_t k = 0; k < j; ++k) sum = sum - l[i][k] * l[j][k] * d[k];
-            l[i][j] = sum / pivot;
-        }
-    }
-    return n;
-}
 
 // Step 3 at the checker's root box: H + rho A^T A from the KKT Jacobian.
 void check_second_order(Context& context, const Json& proof, const KktEquations& equations, const Box& root) {
@@ -107,18 +63,13 @@ std::string basis_words(const std::array<std::array<Real, 3>, 3>& rows) {
 }
 
 std::string check_local_optimum(const Json& claim, Context& context) {
-    const Json& document = context.document();
-    const Json& data = context.member(claim, "data", "claim");
-    const Json& inputs = context.member(document, "inputs", "");
-    const Json& proof = context.member(document, "proof", "");
-    const mpfr_prec_t precision = context.precision();
-
-    const mpq_class p = context.rational_at(data, "p", "claim.data");
-    context.require(context.rational_at(inputs, "p", "inputs") == p, "inputs.p", "the input p differs from the claim's");
     // At p = 1/2 the norm is piecewise linear (an octahedron): no second derivatives.
-    context.require(p > mpq_class(1, 2), "inputs.p", "local optimality by second derivatives needs p > 1/2");
-    if (context.string_at(proof, "kind", "proof") != "local-optimum") context.malformed("proof.kind", "expected \"local-optimum\"");
-    const std::vector<Triple> contacts = read_contact_pairs(context, data);
+    const ClaimParts parts =
+        read_claim_parts(claim, context, "local-optimum", "inputs.p", "local optimality by second derivatives needs p > 1/2");
+    const Json &data = parts.data, &inputs = parts.inputs, &proof = parts.proof;
+    const mpq_class& p = parts.p;
+    const mpfr_prec_t precision = context.precision();
+    const std::vector<Triple> contacts = read_contact_pairs(context, data, "contact_pairs", "claim.data");
     const std::size_t m = contacts.size();
     const Real p_interval = rational(p, precision);
 

@@ -47,4 +47,17 @@ constexpr std::size_t max_rational_characters = 10000;
 // cube's 13 pairs as well.
 constexpr std::size_t max_contact_pairs = 13;
 
+// The critical-lattice claim (claim_critical_lattice.cpp, NOTES.md 12.8). Start boxes: the whole
+// domain has 168, --around a few. Closing regions: one per certified optimum near T (one so far,
+// with 4 images in the chart at p = 2); the images are counted over all regions. A tree string is at most the file. Splits nest at most max_tree_depth deep (the
+// replay keeps its own stack, never recursion): the producer stops at widths of 1e-10, about
+// 33 halvings of each of the 6 coordinates, 200 levels. The entries of an image's W^-1 are
+// small integers (adjugates of contact coefficients); the bound keeps their products exact.
+constexpr std::size_t max_chart_boxes = 100000;
+constexpr std::size_t max_closing_regions = 16;
+constexpr std::size_t max_chart_images = 4096;
+constexpr std::size_t max_tree_characters = std::size_t{16} << 20;
+constexpr std::size_t max_tree_depth = 1024;
+constexpr long max_image_coefficient = 1000;
+
 }  // namespace superpack_checker

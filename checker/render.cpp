@@ -33,6 +33,9 @@ std::string enclosure_words(const Real& x) {
     return "[" + end_text(x.lo(), "%.*RDg", 17) + ", " + end_text(x.hi(), "%.*RUg", 17) + "]";
 }
 
+std::string lower_end_words(const Real& x) { return end_text(x.lo(), "%.*RDg", 17); }
+std::string upper_end_words(const Real& x) { return end_text(x.hi(), "%.*RUg", 17); }
+
 std::string exact_text(const mpq_class& q) {
     // A reduced a/b is a terminating decimal iff b = 2^i 5^j; it then has max(i, j) places.
     mpz_class rest = q.get_den();

@@ -18,6 +18,10 @@ std::string decimal_field(const Real& x);
 // "[lo, hi]" with 17 significant digits in the shortest form ("[0.76567517828374320, ...]"),
 // for a sentence.
 std::string enclosure_words(const Real& x);
+// One end alone with 17 significant digits, rounded outward: the lower end down, the upper up
+// ("a bound >= T" and "at most phi" stay true when printed).
+std::string lower_end_words(const Real& x);
+std::string upper_end_words(const Real& x);
 // A rational exactly: a terminating decimal ("0.85", "-3.9") when it is one, else "a/b". The
 // rule of the inputs' "p_decimal".
 std::string exact_text(const mpq_class& q);

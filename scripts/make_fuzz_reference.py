@@ -285,6 +285,15 @@ def local_optimum(data, proof):
     return values
 
 
+def critical_lattice(data):
+    """The superball's volume at p and V(K) / T for the claim's threshold T (an exact point: the
+    claim's bound is about that T, so only V(K) / T is a value to enclose)."""
+    q = 2 * as_mpf(Fraction(data["p"]))
+    volume = (2 * gamma(1 + 1 / q)) ** 3 / gamma(1 + 3 / q)
+    threshold = as_mpf(exact(data["threshold"]["lo"]))
+    return {"/claim/data/volume": text(volume), "/claim/data/upper_phi": text(volume / threshold)}
+
+
 def rules(document):
     claim, data = document["claim"], document["claim"]["data"]
     kind = claim["kind"]
@@ -305,6 +314,9 @@ def rules(document):
         values = lattice_witness(data, document["inputs"], data["family"])
     elif kind == "local-optimum":
         values = local_optimum(data, document["proof"])
+    elif kind == "critical-lattice":
+        values = critical_lattice(data)
+        ranges = ["/claim/data/threshold"]  # the bound the claim is about: it may only stay as it is
     elif kind == "audit":
         values = audit(data)
         ranges = ["/claim/data/range", "/inputs/range", "/claim/data/pieces/*/p"]

@@ -88,7 +88,8 @@ TEST_CASE("critical: its limits are one-line errors, exit 2, before any computat
     for (const char* arguments : {"critical --p 0.5", "critical --p 11", "critical --p 1", "critical --p 2 --gap 0.5",
                                   "critical --p 2 --gap -0.1", "critical --p 2 --threads 0", "critical --p 2 --threads 65",
                                   "critical --p 2 --shard 3/2", "critical --p 2 --shard 0/169", "critical --p 2 --shard x",
-                                  "critical --p 2 --max-boxes 0", "critical --gap 0.1"}) {
+                                  "critical --p 2 --max-boxes 0", "critical --gap 0.1", "critical --p 2 --around 0",
+                                  "critical --p 2 --around 0.02", "critical --p 2 --around x"}) {
         INFO(arguments);
         const Run result = run(arguments);
         CHECK(result.status == 2);
@@ -157,6 +158,36 @@ TEST_CASE("critical --merge: sums shards i/n, and refuses a shard missing, repea
     CHECK(other_threshold.err.find("has another T") != std::string::npos);
     std::ofstream(dir + "density.json") << run("density --family C0 --p 1.5 --json").out;
     check_error("critical --merge " + dir + "density.json", 2, "not a document of superpack critical");
+}
+
+TEST_CASE("critical --around R --certificate FILE: the boxes around C1's images, proved, certified and verified") {
+    const Scratch scratch;
+    const std::string file = scratch.path + "/critical.json";
+    const Run result = run("critical --p 2 --around 1e-5 --certificate " + file + " --json");
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    const auto document = nlohmann::json::parse(result.out);
+    CHECK(document["status"] == "proved");
+    CHECK(document["start_boxes"] == 4);
+    CHECK_FALSE(document.contains("shard"));
+    const Run verified = run("verify " + file);
+    INFO(verified.out << verified.err);
+    CHECK(verified.status == 0);
+    CHECK(verified.out.find("|det| >=") != std::string::npos);
+    // Such a run is no shard: --merge refuses it, whatever its shard fields would say.
+    CHECK(run("critical --p 2 --around 1e-5 --json > " + scratch.path + "/around.json").status == 0);
+    check_error("critical --merge " + scratch.path + "/around.json", 2, "not a shard");
+    // A shard document whose box count is not its shard's.
+    auto edited = nlohmann::json::parse(std::ifstream(scratch.path + "/around.json"));
+    edited["shard"] = {{"index", 0}, {"count", 1}, {"top_level_boxes", 168}};
+    std::ofstream(scratch.path + "/forged.json") << edited.dump();
+    check_error("critical --merge " + scratch.path + "/forged.json", 2, "has 4 top-level boxes, not 168");
+    // D14 at p = 3/5 has seven contact pairs: no closing region in the six-pair chart (after the
+    // progress line of best).
+    const Run seven = run("critical --p 0.6 --around 1e-5");
+    CHECK(seven.status == 2);
+    CHECK(seven.out.empty());
+    CHECK(seven.err.find("no closing region") != std::string::npos);
 }
 
 TEST_CASE("density --json: one document with the contract's names and widths") {

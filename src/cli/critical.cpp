@@ -1,4 +1,5 @@
-// superpack critical --p P [--gap G] [--threads N] [--shard i/n] [--max-boxes M] [--json]
+// superpack critical --p P [--gap G] [--threads N] [--shard i/n] [--max-boxes M] [--around R]
+//                    [--certificate FILE] [--json]
 // superpack critical --merge FILE... [--json]
 // A certified upper bound on the lattice packing density at p (problems/critical.hpp, NOTES 12),
 // run whole or in shards whose JSON documents --merge sums into the whole domain's result.
@@ -8,6 +9,7 @@
 #include "common.hpp"
 #include "critical_merge.hpp"
 #include "superpack/arith/enclosure_json.hpp"
+#include "superpack/cert/critical_certificate.hpp"
 #include "superpack/problems/critical.hpp"
 
 namespace superpack::cli {
@@ -15,7 +17,7 @@ namespace superpack::cli {
 namespace {
 
 struct CriticalCommandOptions {
-    std::string p, gap = "0", shard = "0/1";
+    std::string p, gap = "0", shard = "0/1", around, certificate;
     std::vector<std::string> merge;
     int threads = 1;
     long max_boxes = 50000000;
@@ -96,7 +98,10 @@ void print_table(const CriticalResult<DInterval>& result, const CriticalOptions&
               << "gap          upper / lower - 1 <= " << gap.hi << "\n"
               << "threshold    |det| >= " << threshold.lo << " for every lattice packing"
               << (result.status == Outcome::proved ? "" : " (not proved)") << "\n";
-    if (result.partial_domain)
+    if (!options.start_boxes.empty())
+        std::cout << "domain       " << result.start_boxes << " chart boxes around the best lattice's images (--around): the "
+                  << "bound holds on them only\n";
+    else if (result.partial_domain)
         std::cout << "domain       shard " << options.shard << "/" << options.shards << ": " << result.start_boxes << " of "
                   << top_level_boxes << " top-level boxes (the bound needs every shard)\n";
     std::cout << "status       " << (result.status == Outcome::proved ? "proved" : "undecided") << ": " << result.message << "\n"
@@ -129,8 +134,12 @@ void print_result(const CriticalResult<DInterval>& result, const CriticalOptions
             document["threads"] = options.threads;
             document["max_boxes"] = options.max_boxes;
         }
-        // What a merge needs: the shard, the domain's size, and T.
-        document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes}};
+        // What a merge needs: the shard, the domain's size, and T. A run on given boxes (--around)
+        // is no shard, and --merge refuses it.
+        if (!options.start_boxes.empty())
+            document["domain"] = "around the best lattice's images";
+        else
+            document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes}};
         document.update(result_json(result));
         print_json(document);
     } else {
@@ -166,6 +175,26 @@ void run_merge(const CriticalCommandOptions& command) {
     print_result(merge_shards(setup, summaries), options, documents.front().p_exact, true, command.json);
 }
 
+// --around R: 0 < R <= 1/100, checked before any computation.
+double parse_around(const std::string& text) {
+    const Rational radius = parse_number(text, "--around");
+    if (!(radius > Rational(0)) || radius > Rational(1, 100)) throw InputError("--around: 0 < R <= 1/100, got " + text);
+    // The half-width only places the boxes, which the result and the certificate state exactly.
+    return std::stod(text);
+}
+
+// The chart boxes of half-width R around the images of the best lattice's closing region, the
+// neighbourhood where the bound at gap 0 is decided (and whose certificate is small).
+std::vector<ChartBox<DInterval>> boxes_around(const CriticalReference<DInterval>& reference, const CriticalOptions& options,
+                                              double radius) {
+    const CriticalResult<DInterval> setup = critical_setup(reference, options);
+    if (setup.images.empty())
+        throw InputError("critical --around: the best lattice at this p has no closing region in the chart (NOTES.md 12.7)");
+    std::vector<ChartBox<DInterval>> boxes;
+    for (const ChartImage& image : setup.images) boxes.push_back(chart_box_around(image.chart_basis, image.configuration, radius));
+    return boxes;
+}
+
 int run(const CriticalCommandOptions& command) {
     if (!command.merge.empty()) {
         run_merge(command);
@@ -183,9 +212,12 @@ int run(const CriticalCommandOptions& command) {
     options.threads = command.threads;
     options.max_boxes = command.max_boxes;
     std::tie(options.shard, options.shards) = parse_shard(command.shard);
+    const double around = command.around.empty() ? 0 : parse_around(command.around);
     const DoubleField field;
     std::cerr << "critical: certifying the densest lattice at p (best)\n";
     const CriticalReference<DInterval> reference = critical_reference(options.p, field);
+    if (!command.around.empty()) options.start_boxes = boxes_around(reference, options, around);
+    options.record_trees = !command.certificate.empty();
     options.progress = [](const CriticalProgress& progress) {
         std::cerr << "critical: " << progress.seconds << " s, " << progress.processed << " boxes evaluated, "
                   << progress.queued << " queued, " << progress.counts[static_cast<int>(BoxReason::determinant)]
@@ -193,7 +225,12 @@ int run(const CriticalCommandOptions& command) {
                                                progress.counts[static_cast<int>(BoxReason::undecided_budget)]
                   << " undecided\n";
     };
-    print_result(critical_bound(reference, options), options, command.p, false, command.json);
+    const CriticalResult<DInterval> result = critical_bound(reference, options);
+    if (!command.certificate.empty() && result.status == Outcome::proved) {
+        std::cerr << "critical: replaying the certificate with the checker\n";
+        write_certificate(command.certificate, critical_certificate(result, options));
+    }
+    print_result(result, options, command.p, false, command.json);
     return exit_ok;
 }
 
@@ -214,6 +251,12 @@ void add_critical(CLI::App& app) {
     command->add_option("--merge", options->merge,
                         "FILE...: the --json documents of shards 0/n to n-1/n (same p and gap), summed into the whole "
                         "domain's result (proved iff every shard is; each file at most 1 MiB)");
+    command->add_option("--around", options->around,
+                        "R: instead of the whole domain, the chart boxes of half-width 0 < R <= 1/100 around the images "
+                        "of the best lattice's closing region");
+    command->add_option("--certificate", options->certificate,
+                        "FILE: write the critical-lattice certificate (every tree, replayed by the checker first; at "
+                        "most 16 MiB, so with --around)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
 }

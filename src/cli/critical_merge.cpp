@@ -62,6 +62,11 @@ ShardDocument read_shard_document(const std::string& path) {
         }
         summary.processed = document.at("processed").get<long>();
         summary.start_boxes = document.at("start_boxes").get<long>();
+        // Shard i/n holds the top-level boxes k = i mod n.
+        const long expected = (top_level_boxes - summary.index + summary.count - 1) / summary.count;
+        if (summary.start_boxes != expected)
+            throw InputError(where + "shard " + std::to_string(summary.index) + "/" + std::to_string(summary.count) + " has " +
+                             std::to_string(summary.start_boxes) + " top-level boxes, not " + std::to_string(expected));
         summary.seconds = document.at("seconds").get<double>();
         return shard;
     } catch (const Json::exception& error) {

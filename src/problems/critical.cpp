@@ -106,6 +106,12 @@ struct WorkQueue {
     std::mutex mutex;
     std::condition_variable wake;
     std::vector<ChartBox<DInterval>> stack;
+    // With record_trees: each stacked box's place in its tree (the start box's index in 6 digits,
+    // then 0 or 1 per split), and each decided box's place and letters. Sorted by place, the
+    // letters are the trees in pre-order.
+    bool record = false;
+    std::vector<std::string> places;
+    std::vector<std::pair<std::string, std::string>> records;
     int active = 0;
     long processed = 0;
     std::array<long, box_reasons> counts{};
@@ -114,6 +120,21 @@ struct WorkQueue {
 };
 
 constexpr std::size_t kept_undecided = 20;
+
+// The place of start box k: its index in 6 digits, so that places sort by box first.
+std::string tree_place(std::size_t k) {
+    std::string digits = std::to_string(k);
+    return std::string(6 - std::min<std::size_t>(6, digits.size()), '0') + digits;
+}
+
+// The records sorted by place are each tree in pre-order (a place sorts before its extensions,
+// and '0' before '1').
+std::vector<std::string> assemble_trees(std::vector<std::pair<std::string, std::string>>& records, std::size_t count) {
+    std::sort(records.begin(), records.end());
+    std::vector<std::string> trees(count);
+    for (const auto& record : records) trees[std::stoul(record.first.substr(0, 6))] += record.second;
+    return trees;
+}
 
 void work(WorkQueue& queue, const BoxContext& context, long max_boxes) {
     std::unique_lock<std::mutex> lock(queue.mutex);
@@ -126,16 +147,32 @@ void work(WorkQueue& queue, const BoxContext& context, long max_boxes) {
         }
         ChartBox<DInterval> box = queue.stack.back();
         queue.stack.pop_back();
+        std::string place;
+        if (queue.record) {
+            place = std::move(queue.places.back());
+            queue.places.pop_back();
+        }
         const bool over_budget = queue.processed >= max_boxes;
         ++queue.processed;
         ++queue.active;
         lock.unlock();
-        const BoxDecision decision =
-            over_budget ? BoxDecision{BoxReason::undecided_budget, box} : decide_box(box, context);
+        std::string letters;
+        const BoxDecision decision = over_budget ? BoxDecision{BoxReason::undecided_budget, box}
+                                                 : decide_box(box, context, queue.record ? &letters : nullptr);
         const std::optional<BoxReason>& reason = decision.reason;
         std::array<ChartBox<DInterval>, 2> halves;
-        if (!reason) halves = split_box(decision.box);
+        if (!reason) {
+            halves = split_box(decision.box);
+            letters += 'S';
+        }
         lock.lock();
+        if (queue.record) {
+            if (!reason) {
+                queue.places.push_back(place + '1');
+                queue.places.push_back(place + '0');
+            }
+            queue.records.emplace_back(std::move(place), std::move(letters));
+        }
         --queue.active;
         if (reason) {
             ++queue.counts[static_cast<int>(*reason)];
@@ -187,6 +224,11 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
     result.partial_domain = options.shards > 1 || !options.start_boxes.empty();
     result.start_boxes = static_cast<long>(queue.stack.size());
     std::reverse(queue.stack.begin(), queue.stack.end());
+    queue.record = options.record_trees;
+    if (queue.record) {
+        result.boxes.assign(queue.stack.rbegin(), queue.stack.rend());
+        for (std::size_t k = queue.stack.size(); k-- > 0;) queue.places.push_back(tree_place(k));
+    }
 
     const BoxContext context =
         box_context(options.p, result.volume, result.threshold, result.regions, result.images, options.min_width);
@@ -219,6 +261,7 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
         if (!decided(static_cast<BoxReason>(r))) undecided += result.counts[r];
     if (undecided == 0) {
         result.status = Outcome::proved;
+        if (queue.record) result.trees = assemble_trees(queue.records, result.boxes.size());
         result.message = result.partial_domain
                              ? "every box of this part of the domain is decided: on it every lattice packing has |det| >= T"
                              : "every box is decided: every lattice packing of K has |det| >= T, so density <= V(K) / T";

@@ -3,6 +3,7 @@
 // leaf must decide) and split.
 #pragma once
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "superpack/problems/critical.hpp"
@@ -13,6 +14,7 @@ struct BoxContext {
     DInterval two_p;
     DInterval volume;     // V(K)
     DInterval threshold;  // T (a point)
+    DInterval margin_above, margin_below;  // 1 + 2^-40 and 1 - 2^-40: the leaves' margins on T and V(K)
     std::vector<Coefficients> short_candidates;  // |c_i| <= 2, one per pair, not in a configuration
     const std::vector<ClosingRegion<DInterval>>* regions = nullptr;
     const std::vector<ChartImage>* images = nullptr;
@@ -28,7 +30,10 @@ struct BoxDecision {
     std::optional<BoxReason> reason;
     ChartBox<DInterval> box;
 };
-BoxDecision decide_box(const ChartBox<DInterval>& box, const BoxContext& context);
+// With a trace, the box's rounds and its leaf letter are appended in the tree grammar of the
+// critical-lattice certificate (NOTES.md 12.8); a box to split gets its rounds only (the
+// caller appends 'S' and its halves).
+BoxDecision decide_box(const ChartBox<DInterval>& box, const BoxContext& context, std::string* trace = nullptr);
 
 // The two halves of the box along its widest coordinate.
 std::array<ChartBox<DInterval>, 2> split_box(const ChartBox<DInterval>& box);

@@ -94,6 +94,9 @@ struct CriticalOptions {
     // is then about them only, and says so.
     std::vector<ChartBox<DInterval>> start_boxes;
     std::function<void(const CriticalProgress&)> progress;  // called about every 2 s from a monitor thread
+    // Record each start box's bisection tree in the grammar of the critical-lattice certificate
+    // (NOTES.md 12.8) into CriticalResult::trees.
+    bool record_trees = false;
 };
 
 // A closing region placed in the chart: the chart basis of an image of the optimum is
@@ -132,6 +135,10 @@ struct CriticalResult {
     bool partial_domain = false;  // a shard or given boxes: the bound holds only with the other shards
     std::vector<UndecidedBox<I>> undecided;  // the first few
     double seconds = 0;
+    // With CriticalOptions::record_trees and every box decided: this shard's start boxes and the
+    // tree of each, in the same order.
+    std::vector<ChartBox<I>> boxes;
+    std::vector<std::string> trees;
 };
 
 // The domain of the command: 1/2 < p <= 10 (p = 1 needs gap > 0), 0 <= gap < 1/2 (InputError).

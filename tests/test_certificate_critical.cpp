@@ -1,0 +1,170 @@
+// Certificates of claim kind "critical-lattice" (superpack critical --certificate FILE, NOTES.md
+// 12.8): the boxes around C1's images at p = 2 and gap 0 certify, and the checker rejects, each at
+// a named tree, a changed leaf reason, a removed leaf, a cut moved to the other side, a closing
+// region leaf pointed at another image, a removed start box and a raised T.
+#include <string>
+#include <vector>
+
+#include "checker/verifier.hpp"
+#include "superpack/cert/critical_certificate.hpp"
+#include "support.hpp"
+#include "tamper.hpp"
+
+namespace {
+
+using superpack::Rational;
+using superpack_checker::Verdict;
+using superpack_checker::verify_document;
+using superpack::test::rejected_at;
+using Document = nlohmann::json;
+
+// critical at p = 2, gap 0, on the boxes of half-width 1e-5 around C1's images, with its trees.
+const Document& certificate_around_c1() {
+    static const Document document = [] {
+        using namespace superpack;
+        const CriticalReference<DInterval> reference = critical_reference(Rational(2), DoubleField{});
+        CriticalOptions options;
+        options.p = Rational(2);
+        options.record_trees = true;
+        const CriticalResult<DInterval> setup = critical_setup(reference, options);
+        for (const ChartImage& image : setup.images)
+            options.start_boxes.push_back(chart_box_around(image.chart_basis, image.configuration, 1e-5));
+        const CriticalResult<DInterval> result = critical_bound(reference, options);
+        REQUIRE(result.status == Outcome::proved);
+        return Document::parse(critical_certificate(result, options).dump());
+    }();
+    return document;
+}
+
+// The leaves of a tree string (NOTES.md 12.8's grammar): the offset and length of each.
+struct Token {
+    std::size_t offset, length;
+    char letter;
+};
+
+void skip_round(const std::string& tree, std::size_t& at) {
+    at += 4;  // 'C' and the three pivots
+    while (tree[at] != ';') at += (tree[at + 2] == 'x') ? 3 : 19;
+    ++at;
+}
+
+void collect_leaves(const std::string& tree, std::size_t& at, std::vector<Token>& leaves) {
+    while (tree[at] == 'C') skip_round(tree, at);
+    const char letter = tree[at];
+    if (letter == 'S') {
+        ++at;
+        collect_leaves(tree, at, leaves);
+        collect_leaves(tree, at, leaves);
+        return;
+    }
+    std::size_t length = 1;
+    if (letter == 's') length = 4;
+    if (letter == 'c') length = tree.find('.', at) + 1 - at;
+    leaves.push_back({at, length, letter});
+    at += length;
+}
+
+std::vector<Token> leaves_of(const std::string& tree) {
+    std::vector<Token> leaves;
+    std::size_t at = 0;
+    collect_leaves(tree, at, leaves);
+    REQUIRE(at == tree.size());
+    return leaves;
+}
+
+// The first tree with a leaf of `letter`: its index and the leaf.
+std::pair<std::size_t, Token> first_leaf(const Document& document, char letter) {
+    const Document& trees = document["proof"]["trees"];
+    for (std::size_t k = 0; k < trees.size(); ++k)
+        for (const Token& token : leaves_of(trees[k].get<std::string>()))
+            if (token.letter == letter) return {k, token};
+    FAIL("no leaf '" << letter << "'");
+    return {0, {0, 0, letter}};
+}
+
+std::string tree_path(std::size_t k) { return "proof.trees[" + std::to_string(k) + "]"; }
+
+}  // namespace
+
+TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it verifies, with both leaf kinds near C1") {
+    const Document& document = certificate_around_c1();
+    const auto report = verify_document(document);
+    INFO(report.path << ": " << report.message);
+    REQUIRE(report.verdict == Verdict::valid);
+    CHECK(document["claim"]["data"]["domain"] == "boxes");
+    CHECK(document["proof"]["regions"].size() == 1);
+    CHECK(document["proof"]["regions"][0]["images"].size() == 4);
+    first_leaf(document, 'c');
+    first_leaf(document, 'd');
+}
+
+TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, an image, a start box, T") {
+    const Document& original = certificate_around_c1();
+
+    SECTION("a determinant leaf said to have no configuration point") {
+        Document copy = original;
+        const auto [k, leaf] = first_leaf(copy, 'd');
+        std::string tree = copy["proof"]["trees"][k];
+        tree[leaf.offset] = 'n';
+        copy["proof"]["trees"][k] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+    }
+    SECTION("a closing-region leaf said to be a determinant leaf") {
+        Document copy = original;
+        const auto [k, leaf] = first_leaf(copy, 'c');
+        std::string tree = copy["proof"]["trees"][k];
+        tree.replace(leaf.offset, leaf.length, "d");
+        copy["proof"]["trees"][k] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+    }
+    SECTION("a closing-region leaf pointed at another image") {
+        Document copy = original;
+        const auto [k, leaf] = first_leaf(copy, 'c');
+        std::string tree = copy["proof"]["trees"][k];
+        const int image = std::stoi(tree.substr(leaf.offset + 1, leaf.length - 2));
+        tree.replace(leaf.offset, leaf.length, "c" + std::to_string((image + 1) % 4) + ".");
+        copy["proof"]["trees"][k] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+    }
+    SECTION("the last leaf of a tree removed (a box left uncovered)") {
+        Document copy = original;
+        std::string tree = copy["proof"]["trees"][0];
+        const std::vector<Token> leaves = leaves_of(tree);
+        REQUIRE(leaves.size() > 1);
+        tree.erase(leaves.back().offset, leaves.back().length);
+        copy["proof"]["trees"][0] = tree;
+        const auto report = verify_document(copy);
+        CHECK(report.verdict != Verdict::valid);
+        CHECK(report.path.rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("a cut moved to the other side of the coordinate") {
+        Document copy = original;
+        std::string tree = copy["proof"]["trees"][0];
+        // The first cut: a step with side 'l' or 'h' in some round (a round may have none).
+        std::size_t at = 0, cut = std::string::npos;
+        while (cut == std::string::npos && (at = tree.find('C', at)) != std::string::npos) {
+            std::size_t step = at + 4;
+            while (tree[step] != ';' && tree[step + 2] == 'x') step += 3;
+            if (tree[step] != ';') cut = step;
+            at = step;
+        }
+        REQUIRE(cut != std::string::npos);
+        tree[cut + 2] = tree[cut + 2] == 'l' ? 'h' : 'l';
+        copy["proof"]["trees"][0] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("a start box removed with its tree: the claim is another one") {
+        Document copy = original;
+        copy["proof"]["boxes"].erase(0);
+        copy["proof"]["trees"].erase(0);
+        CHECK(rejected_at(copy) == "claim.text");
+    }
+    SECTION("T raised above C1's det") {
+        Document copy = original;
+        Document& threshold = copy["claim"]["data"]["threshold"];
+        superpack::test::tamper_bound(copy, "/claim/data/threshold/lo");
+        threshold["hi"] = threshold["lo"];
+        const std::string path = rejected_at(copy);
+        CHECK(superpack::test::proof_step(path));
+    }
+}
