@@ -177,6 +177,8 @@ TEST_CASE("critical --around R --certificate FILE: the boxes around C1's images,
     // Such a run is no shard: --merge refuses it, whatever its shard fields would say.
     CHECK(run("critical --p 2 --around 1e-5 --json > " + scratch.path + "/around.json").status == 0);
     check_error("critical --merge " + scratch.path + "/around.json", 2, "not a shard");
+    check_error("critical --merge " + scratch.path + "/around.json --certificate " + scratch.path + "/merged.json", 2,
+                "writes no certificate");
     // A shard document whose box count is not its shard's.
     auto edited = nlohmann::json::parse(std::ifstream(scratch.path + "/around.json"));
     edited["shard"] = {{"index", 0}, {"count", 1}, {"top_level_boxes", 168}};

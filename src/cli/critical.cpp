@@ -153,6 +153,9 @@ void print_result(const CriticalResult<DInterval>& result, const CriticalOptions
 void run_merge(const CriticalCommandOptions& command) {
     if (!command.p.empty() || command.shard != "0/1")
         throw InputError("critical --merge: takes p, the gap and the shards from the files; give no --p or --shard");
+    // A merge re-runs no box, so it has no trees to certify (NOTES.md 12.7) and no boxes to place.
+    if (!command.certificate.empty() || !command.around.empty())
+        throw InputError("critical --merge: writes no certificate and takes no --around (it re-runs no box)");
     std::vector<ShardDocument> documents;
     std::vector<ShardSummary> summaries;
     for (const std::string& path : command.merge) {
