@@ -2,6 +2,7 @@
 // 12.8): the boxes around C1's images at p = 2 and gap 0 certify, and the checker rejects, each at
 // a named tree, a changed leaf reason, a removed leaf, a cut moved to the other side, a closing
 // region leaf pointed at another image, a removed start box and a raised T.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,17 @@ std::pair<std::size_t, Token> first_leaf(const Document& document, char letter) 
 
 std::string tree_path(std::size_t k) { return "proof.trees[" + std::to_string(k) + "]"; }
 
+// The first leaf of `letter` replaced by change(leaf) must be rejected at its tree.
+void check_leaf_change_rejected(const Document& original, char letter,
+                                const std::function<std::string(const std::string&)>& change) {
+    Document copy = original;
+    const auto [k, leaf] = first_leaf(copy, letter);
+    std::string tree = copy["proof"]["trees"][k];
+    tree.replace(leaf.offset, leaf.length, change(tree.substr(leaf.offset, leaf.length)));
+    copy["proof"]["trees"][k] = tree;
+    CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+}
+
 }  // namespace
 
 TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it verifies, with both leaf kinds near C1") {
@@ -102,29 +114,16 @@ TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a
     const Document& original = certificate_around_c1();
 
     SECTION("a determinant leaf said to have no configuration point") {
-        Document copy = original;
-        const auto [k, leaf] = first_leaf(copy, 'd');
-        std::string tree = copy["proof"]["trees"][k];
-        tree[leaf.offset] = 'n';
-        copy["proof"]["trees"][k] = tree;
-        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+        check_leaf_change_rejected(original, 'd', [](const std::string&) { return std::string("n"); });
     }
     SECTION("a closing-region leaf said to be a determinant leaf") {
-        Document copy = original;
-        const auto [k, leaf] = first_leaf(copy, 'c');
-        std::string tree = copy["proof"]["trees"][k];
-        tree.replace(leaf.offset, leaf.length, "d");
-        copy["proof"]["trees"][k] = tree;
-        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+        check_leaf_change_rejected(original, 'c', [](const std::string&) { return std::string("d"); });
     }
     SECTION("a closing-region leaf pointed at another image") {
-        Document copy = original;
-        const auto [k, leaf] = first_leaf(copy, 'c');
-        std::string tree = copy["proof"]["trees"][k];
-        const int image = std::stoi(tree.substr(leaf.offset + 1, leaf.length - 2));
-        tree.replace(leaf.offset, leaf.length, "c" + std::to_string((image + 1) % 4) + ".");
-        copy["proof"]["trees"][k] = tree;
-        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+        check_leaf_change_rejected(original, 'c', [](const std::string& leaf) {
+            const int image = std::stoi(leaf.substr(1, leaf.size() - 2));
+            return "c" + std::to_string((image + 1) % 4) + ".";
+        });
     }
     SECTION("the last leaf of a tree removed (a box left uncovered)") {
         Document copy = original;
