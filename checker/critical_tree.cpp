@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -55,6 +56,7 @@ public:
             Pending node = std::move(stack.back());
             stack.pop_back();
             node_at_ = at_;
+            if (counts_.nodes % 1024 == 0) report_progress();
             try {
                 decide(node, stack);
             } catch (const std::domain_error& error) {
@@ -65,6 +67,13 @@ public:
     }
 
 private:
+    void report_progress() {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - counts_.reported < std::chrono::seconds(2)) return;
+        counts_.reported = now;
+        std::cerr << "superpack-verify: critical-lattice: " << counts_.nodes << " boxes replayed, now in " << path_ << "\n";
+    }
+
     Context& context_;
     const std::string& tree_;
     const ChartBox& start_;

@@ -17,6 +17,7 @@
 // with the basis over it.
 #pragma once
 #include <array>
+#include <chrono>
 #include <string>
 
 #include "checker/critical_region.hpp"
@@ -33,6 +34,8 @@ struct TreeCounts {
     long nodes = 0;  // boxes replayed
     long rounds = 0, cuts = 0;
     std::array<long, leaf_reasons> leaves{};
+    // A replay of more than a few seconds reports the boxes replayed on stderr every 2 s from here.
+    std::chrono::steady_clock::time_point reported = std::chrono::steady_clock::now();
 };
 
 struct TreeSetting {
