@@ -27,9 +27,7 @@ const Document& certificate_around_c1() {
         CriticalOptions options;
         options.p = Rational(2);
         options.record_trees = true;
-        const CriticalResult<DInterval> setup = critical_setup(reference, options);
-        for (const ChartImage& image : setup.images)
-            options.start_boxes.push_back(chart_box_around(image.chart_basis, image.configuration, 1e-5));
+        options.around = 1e-5;
         const CriticalResult<DInterval> result = critical_bound(reference, options);
         REQUIRE(result.status == Outcome::proved);
         return Document::parse(critical_certificate(result, options).dump());

@@ -98,7 +98,7 @@ void print_table(const CriticalResult<DInterval>& result, const CriticalOptions&
               << "gap          upper / lower - 1 <= " << gap.hi << "\n"
               << "threshold    |det| >= " << threshold.lo << " for every lattice packing"
               << (result.status == Outcome::proved ? "" : " (not proved)") << "\n";
-    if (!options.start_boxes.empty())
+    if (options.around > 0)
         std::cout << "domain       " << result.start_boxes << " chart boxes around the best lattice's images (--around): the "
                   << "bound holds on them only\n";
     else if (result.partial_domain)
@@ -136,7 +136,7 @@ void print_result(const CriticalResult<DInterval>& result, const CriticalOptions
         }
         // What a merge needs: the shard, the domain's size, and T. A run on given boxes (--around)
         // is no shard, and --merge refuses it.
-        if (!options.start_boxes.empty())
+        if (options.around > 0)
             document["domain"] = "around the best lattice's images";
         else
             document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes}};
@@ -186,18 +186,6 @@ double parse_around(const std::string& text) {
     return std::stod(text);
 }
 
-// The chart boxes of half-width R around the images of the best lattice's closing region, the
-// neighbourhood where the bound at gap 0 is decided (and whose certificate is small).
-std::vector<ChartBox<DInterval>> boxes_around(const CriticalReference<DInterval>& reference, const CriticalOptions& options,
-                                              double radius) {
-    const CriticalResult<DInterval> setup = critical_setup(reference, options);
-    if (setup.images.empty())
-        throw InputError("critical --around: the best lattice at this p has no closing region in the chart (NOTES.md 12.7)");
-    std::vector<ChartBox<DInterval>> boxes;
-    for (const ChartImage& image : setup.images) boxes.push_back(chart_box_around(image.chart_basis, image.configuration, radius));
-    return boxes;
-}
-
 int run(const CriticalCommandOptions& command) {
     if (!command.merge.empty()) {
         run_merge(command);
@@ -215,11 +203,10 @@ int run(const CriticalCommandOptions& command) {
     options.threads = command.threads;
     options.max_boxes = command.max_boxes;
     std::tie(options.shard, options.shards) = parse_shard(command.shard);
-    const double around = command.around.empty() ? 0 : parse_around(command.around);
+    options.around = command.around.empty() ? 0 : parse_around(command.around);
     const DoubleField field;
     std::cerr << "critical: certifying the densest lattice at p (best)\n";
     const CriticalReference<DInterval> reference = critical_reference(options.p, field);
-    if (!command.around.empty()) options.start_boxes = boxes_around(reference, options, around);
     options.record_trees = !command.certificate.empty();
     options.progress = [](const CriticalProgress& progress) {
         std::cerr << "critical: " << progress.seconds << " s, " << progress.processed << " boxes evaluated, "

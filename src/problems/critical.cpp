@@ -127,6 +127,15 @@ std::string tree_place(std::size_t k) {
     return std::string(6 - std::min<std::size_t>(6, digits.size()), '0') + digits;
 }
 
+// The chart boxes of half-width `radius` around the images of the setup's closing regions.
+std::vector<ChartBox<DInterval>> boxes_around_images(const CriticalResult<DInterval>& setup, double radius) {
+    if (setup.images.empty())
+        throw InputError("critical --around: the best lattice at this p has no closing region in the chart (NOTES.md 12.7)");
+    std::vector<ChartBox<DInterval>> boxes;
+    for (const ChartImage& image : setup.images) boxes.push_back(chart_box_around(image.chart_basis, image.configuration, radius));
+    return boxes;
+}
+
 // The records sorted by place are each tree in pre-order (a place sorts before its extensions,
 // and '0' before '1').
 std::vector<std::string> assemble_trees(std::vector<std::pair<std::string, std::string>>& records, std::size_t count) {
@@ -218,10 +227,12 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
     const auto start = std::chrono::steady_clock::now();
     CriticalResult<DInterval> result = critical_setup(reference, options);
     WorkQueue queue;
-    const std::vector<ChartBox<DInterval>> domain = options.start_boxes.empty() ? top_level_domain() : options.start_boxes;
+    const std::vector<ChartBox<DInterval>> domain = options.around > 0          ? boxes_around_images(result, options.around)
+                                                    : options.start_boxes.empty() ? top_level_domain()
+                                                                                  : options.start_boxes;
     for (std::size_t k = 0; k < domain.size(); ++k)
         if (static_cast<int>(k % static_cast<std::size_t>(options.shards)) == options.shard) queue.stack.push_back(domain[k]);
-    result.partial_domain = options.shards > 1 || !options.start_boxes.empty();
+    result.partial_domain = options.shards > 1 || !options.start_boxes.empty() || options.around > 0;
     result.start_boxes = static_cast<long>(queue.stack.size());
     std::reverse(queue.stack.begin(), queue.stack.end());
     queue.record = options.record_trees;

@@ -93,6 +93,9 @@ struct CriticalOptions {
     // Instead of the whole domain (tests, benchmarks): these boxes, sharded the same way. A result
     // is then about them only, and says so.
     std::vector<ChartBox<DInterval>> start_boxes;
+    // > 0: instead, the chart boxes of this half-width around the images of the closing regions,
+    // where the bound at gap 0 is decided (InputError when there is no image).
+    double around = 0;
     std::function<void(const CriticalProgress&)> progress;  // called about every 2 s from a monitor thread
     // Record each start box's bisection tree in the grammar of the critical-lattice certificate
     // (NOTES.md 12.8) into CriticalResult::trees.
