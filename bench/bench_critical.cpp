@@ -55,7 +55,7 @@ int main() {
         options.shard = shard;
         options.shards = 4;
         const CriticalResult<DInterval> part = critical_bound(reference, options);
-        shards.push_back({shard, 4, part.status == Outcome::proved, part.counts, part.processed, part.start_boxes, part.seconds});
+        shards.push_back({shard, 4, 0, part.status == Outcome::proved, part.counts, part.processed, part.start_boxes, part.seconds});
     }
     const CriticalResult<DInterval> merged = merge_shards(critical_setup(reference, options), shards);
     const bool merge_agrees = same_leaves(merged, whole[0]);

@@ -16,6 +16,7 @@
 // proof {kind, regions [{contact_pairs, kkt {kind, status, box, root}, rho, box, images
 // [{configuration, inverse, perm, sign}]}], boxes [{configuration, face2, face3, x}], trees}.
 #include "checker/claim_parts.hpp"
+#include "checker/critical_claim.hpp"
 #include "checker/critical_tree.hpp"
 #include "checker/limits.hpp"
 #include "checker/literature.hpp"
@@ -25,43 +26,12 @@ namespace superpack_checker {
 
 namespace {
 
-ChartBox read_chart_box(Context& context, const Json& node, const std::string& path) {
-    if (!node.is_object()) context.malformed(path, "expected a chart box");
-    ChartBox box{Configuration::a3, 0, 0, chart_zeros(context.precision())};
-    box.configuration = read_configuration(context, node, path);
-    box.face2 = static_cast<int>(read_integer(context, context.member(node, "face2", path), path + ".face2", 0, 5));
-    box.face3 = static_cast<int>(read_integer(context, context.member(node, "face3", path), path + ".face3", 0, 5));
-    const Box x = context.box(context.member(node, "x", path), path + ".x");
-    if (x.size() != chart_dimension) context.malformed(path + ".x", "expected the six chart coordinates (s, t, a2, c2, a3, c3)");
-    const mpfr_prec_t precision = context.precision();
-    const Real unit = hull(integer(0, precision), integer(1, precision)), side = hull(integer(-1, precision), integer(1, precision));
-    for (int k = 0; k < chart_dimension; ++k) {
-        const std::string at = path + ".x[" + std::to_string(k) + "]";
-        if (!binary64_box_end(x[k].lo()) || !binary64_box_end(x[k].hi()))
-            context.malformed(at, "a chart box's ends must be binary64 numbers, 0 or at least 2^-1000 in size");
-        // The chart's domain: s, t in [0, 1], a face's coordinates in [-1, 1].
-        context.require(subset(x[k], k < 2 ? unit : side), at, "outside the chart's domain");
-        box.x[k] = x[k];
-    }
-    return box;
-}
-
-// top_level_domain (NOTES.md 12.2): A3 then W, face2 <= face3, the (s, t) square in four.
+// The 168 top-level boxes of NOTES.md 12.2, in order.
 bool whole_domain(const std::vector<ChartBox>& boxes) {
-    if (boxes.size() != 168) return false;
-    std::size_t k = 0;
-    for (const Configuration configuration : {Configuration::a3, Configuration::w})
-        for (int face2 = 0; face2 < 6; ++face2)
-            for (int face3 = face2; face3 < 6; ++face3)
-                for (int piece = 0; piece < 4; ++piece, ++k) {
-                    const ChartBox& box = boxes[k];
-                    if (box.configuration != configuration || box.face2 != face2 || box.face3 != face3) return false;
-                    const double s = 0.5 * (piece / 2), t = 0.5 * (piece % 2);
-                    const std::array<std::array<double, 2>, chart_dimension> ends{
-                        {{s, s + 0.5}, {t, t + 0.5}, {-1, 1}, {-1, 1}, {-1, 1}, {-1, 1}}};
-                    for (int j = 0; j < chart_dimension; ++j)
-                        if (mpfr_cmp_d(box.x[j].lo(), ends[j][0]) != 0 || mpfr_cmp_d(box.x[j].hi(), ends[j][1]) != 0) return false;
-                }
+    const std::vector<DomainBox> domain = chart_domain(0);
+    if (boxes.size() != domain.size()) return false;
+    for (std::size_t k = 0; k < boxes.size(); ++k)
+        if (!(domain_box(boxes[k]) == domain[k])) return false;
     return true;
 }
 
@@ -75,16 +45,8 @@ std::string check_critical_lattice(const Json& claim, Context& context) {
     const mpfr_prec_t precision = context.precision();
 
     // 1. T and V(K).
-    context.current_step = "claim.data";
-    const Real threshold = context.interval(context.member(data, "threshold", "claim.data"), "claim.data.threshold");
-    if (!mpfr_equal_p(threshold.lo(), threshold.hi())) context.malformed("claim.data.threshold", "T must be a point (lo = hi)");
-    context.require(positive(threshold), "claim.data.threshold", "T is not positive");
-    const Real p_interval = rational(p, precision);
-    const Real own_volume = superball_volume(p_interval);
-    const Real volume = proved_enclosure(context, context.member(data, "volume", "claim.data"), "claim.data.volume", own_volume);
-    const Real volume_lo = lower_point(volume);
-    context.require(!less(threshold, volume_lo), "claim.data.threshold",
-                    "T is below V(K): the bound V(K) / T on the density would exceed 1");
+    const CriticalBound bound = read_critical_bound(context, data, p);
+    const Real &threshold = bound.threshold, &volume = bound.volume;
 
     // 2. The closing regions.
     const ClosingRegions regions =
@@ -110,7 +72,7 @@ std::string check_critical_lattice(const Json& claim, Context& context) {
                           : "the boxes are not the 168 top-level boxes of the chart domain, in order: the domain is \"boxes\"");
 
     // 3. The trees.
-    const TreeSetting setting{chart_setting(p, precision), &regions, volume_lo, threshold};
+    const TreeSetting setting{chart_setting(p, precision), &regions, bound.volume_lo, threshold};
     TreeCounts counts;
     for (std::size_t k = 0; k < boxes.size(); ++k) {
         const std::string path = "proof.trees[" + std::to_string(k) + "]";
@@ -120,9 +82,7 @@ std::string check_critical_lattice(const Json& claim, Context& context) {
     }
 
     // 4. The density bound.
-    context.current_step = "claim.data";
-    const Real upper_phi =
-        proved_enclosure(context, context.member(data, "upper_phi", "claim.data"), "claim.data.upper_phi", own_volume / threshold);
+    const Real upper_phi = read_upper_phi(context, data, bound);
     context.rational_at(inputs, "gap", "inputs");  // the producer's gap to the best lattice, informational
     check_p_decimal(context, inputs, p);
 
@@ -133,16 +93,14 @@ std::string check_critical_lattice(const Json& claim, Context& context) {
         total += counts.leaves[r];
     }
     const std::string where =
-        whole ? "on the whole chart domain of NOTES.md 12.2 (the 168 top-level boxes: Minkowski's configurations A3 and W, "
-                "faces face2 <= face3, s and t in [0, 1], a2, c2, a3, c3 in [-1, 1])"
+        whole ? whole_domain_words(0)
               : "on the " + count_words(static_cast<long>(boxes.size()), "chart box", "chart boxes") +
                     " of proof.boxes (the chart of NOTES.md 12.2)";
     const std::string which = whole ? "whose chart basis satisfies its configuration"
                                     : "whose chart basis lies in one of these boxes and satisfies the box's configuration, "
                                       "with b1 longest in the max norm among its orbit (NOTES.md 12.2),";
     const std::string consequence =
-        whole ? "so, since a critical lattice of 2K has a basis of one of these configurations (Minkowski; premises P1-P2 of "
-                "NOTES.md 12.1), every lattice packing of K has density at most "
+        whole ? std::string(whole_domain_consequence)
               : "so the density of each such packing is at most ";
     return "At p = " + exact_text(p) + ", " + where + ": every lattice packing of the superball K = {|x|^(2p) + |y|^(2p) + " +
            "|z|^(2p) <= 1} " + which + " has |det| >= T >= " + lower_end_words(threshold) + " (claim.data.threshold), " +

@@ -371,4 +371,25 @@ void replay_tree(Context& context, const std::string& tree, const ChartBox& star
     TreeReplay(context, tree, start, setting, path, counts).run();
 }
 
+ChartBox read_chart_box(Context& context, const Json& node, const std::string& path) {
+    if (!node.is_object()) context.malformed(path, "expected a chart box");
+    ChartBox box{Configuration::a3, 0, 0, chart_zeros(context.precision())};
+    box.configuration = read_configuration(context, node, path);
+    box.face2 = static_cast<int>(read_integer(context, context.member(node, "face2", path), path + ".face2", 0, 5));
+    box.face3 = static_cast<int>(read_integer(context, context.member(node, "face3", path), path + ".face3", 0, 5));
+    const Box x = context.box(context.member(node, "x", path), path + ".x");
+    if (x.size() != chart_dimension) context.malformed(path + ".x", "expected the six chart coordinates (s, t, a2, c2, a3, c3)");
+    const mpfr_prec_t precision = context.precision();
+    const Real unit = hull(integer(0, precision), integer(1, precision)), side = hull(integer(-1, precision), integer(1, precision));
+    for (int k = 0; k < chart_dimension; ++k) {
+        const std::string at = path + ".x[" + std::to_string(k) + "]";
+        if (!binary64_box_end(x[k].lo()) || !binary64_box_end(x[k].hi()))
+            context.malformed(at, "a chart box's ends must be binary64 numbers, 0 or at least 2^-1000 in size");
+        // The chart's domain: s, t in [0, 1], a face's coordinates in [-1, 1].
+        context.require(subset(x[k], k < 2 ? unit : side), at, "outside the chart's domain");
+        box.x[k] = x[k];
+    }
+    return box;
+}
+
 }  // namespace superpack_checker

@@ -44,6 +44,11 @@ struct TreeSetting {
     Real volume_lo, threshold;  // V_lo (the lower end of the stated V(K)) and T, points
 };
 
+// A start box of proof.boxes: {configuration, face2, face3, x}, its ends binary64 numbers (0 or
+// at least 2^-1000 in size) inside the chart's domain (s, t in [0, 1], the faces' coordinates in
+// [-1, 1]).
+ChartBox read_chart_box(Context& context, const Json& node, const std::string& path);
+
 // Rejects at `path` (e.g. "proof.trees[3]") with the character offset and the step that failed;
 // a string outside the grammar is malformed there.
 void replay_tree(Context& context, const std::string& tree, const ChartBox& start, const TreeSetting& setting,

@@ -59,5 +59,8 @@ constexpr std::size_t max_chart_images = 4096;
 constexpr std::size_t max_tree_characters = std::size_t{16} << 20;
 constexpr std::size_t max_tree_depth = 1024;
 constexpr long max_image_coefficient = 1000;
+// The files a critical-lattice-cover names: at most one per start box of the domain split
+// max_domain_split times (168 * 2^8); each is read under max_file_bytes, one per thread at a time.
+constexpr std::size_t max_cover_files = std::size_t{168} << 8;
 
 }  // namespace superpack_checker

@@ -183,11 +183,11 @@ std::vector<Real> Context::box(const Json& node, const std::string& path) {
     return result;
 }
 
-VerifyReport verify_document(const Json& document) {
+VerifyReport verify_document(const Json& document, const VerifySettings& settings) {
     VerifyReport report;
     long steps = 0;
     try {
-        Context head(document, min_precision);
+        Context head(document, min_precision, settings);
         // A document built in memory has not been through read_json's depth limit.
         const DepthExcess excess = find_depth_excess(document);
         if (excess.found) head.malformed(excess.path, excess.message);
@@ -250,9 +250,15 @@ VerifyReport unreadable(const std::string& path, const std::string& message) {
     return report;
 }
 
-VerifyReport verify_reading(const JsonReading& reading) {
+VerifyReport verify_reading(const JsonReading& reading, const VerifySettings& settings = {}) {
     if (!reading.ok) return unreadable(reading.path, reading.message);
-    return verify_document(reading.document);
+    return verify_document(reading.document, settings);
+}
+
+JsonReading unread(const std::string& message) {
+    JsonReading reading;
+    reading.message = message;
+    return reading;
 }
 
 std::string size_message(std::uintmax_t bytes) {
@@ -267,24 +273,31 @@ VerifyReport verify_text(const std::string& text) {
     return verify_reading(read_json(text));
 }
 
-VerifyReport verify_file(const std::string& path) {
+JsonReading read_certificate_file(const std::string& path) {
     // What the file is, before it is opened: a directory opens as a stream that fails on the first read.
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(path, error);
-    if (error) return unreadable("", "cannot read " + path + ": " + error.message());
+    if (error) return unread("cannot read " + path + ": " + error.message());
     if (!std::filesystem::is_regular_file(status))
-        return unreadable("", "cannot read " + path + ": " +
-                                  (std::filesystem::is_directory(status) ? "a directory" : "not a regular file"));
+        return unread("cannot read " + path + ": " + (std::filesystem::is_directory(status) ? "a directory" : "not a regular file"));
     const std::uintmax_t bytes = std::filesystem::file_size(path, error);
-    if (error) return unreadable("", "cannot read " + path + ": " + error.message());
-    if (bytes > max_file_bytes) return unreadable("", size_message(bytes));
+    if (error) return unread("cannot read " + path + ": " + error.message());
+    if (bytes > max_file_bytes) return unread(size_message(bytes));
     std::ifstream file(path, std::ios::binary);
-    if (!file) return unreadable("", "cannot read " + path);
+    if (!file) return unread("cannot read " + path);
     try {
-        return verify_reading(read_json(file));
+        return read_json(file);
     } catch (const std::exception& failure) {  // a read error of the stream
-        return unreadable("", "cannot read " + path + ": " + failure.what());
+        return unread("cannot read " + path + ": " + failure.what());
     }
+}
+
+VerifyReport verify_file(const std::string& path, int threads) {
+    VerifySettings settings;
+    settings.directory = std::filesystem::path(path).parent_path().string();
+    if (settings.directory.empty()) settings.directory = ".";
+    settings.threads = threads;
+    return verify_reading(read_certificate_file(path), settings);
 }
 
 }  // namespace superpack_checker

@@ -12,8 +12,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
+#include "checker/json_reader.hpp"
 #include "checker/real.hpp"
 
 namespace superpack_checker {
@@ -36,12 +38,24 @@ struct VerifyReport {
     mpfr_prec_t precision = 0;
 };
 
+// What a replay may use besides the document: the directory of its file (a cover certificate
+// names its parts by file names there; an in-memory document has none unless given) and the
+// threads it may run (a cover verifies its parts in parallel).
+struct VerifySettings {
+    std::string directory;
+    int threads = 1;
+};
+
 // A document, the text of a file, or a file: whatever cannot be read within the limits of
 // checker/limits.hpp (NOTES.md 8.8), is not JSON, or is not a regular file is malformed, with
 // one line saying why (and the path in the document where that applies).
-VerifyReport verify_document(const Json& document);
+VerifyReport verify_document(const Json& document, const VerifySettings& settings = {});
 VerifyReport verify_text(const std::string& text);
-VerifyReport verify_file(const std::string& path);
+VerifyReport verify_file(const std::string& path, int threads = 1);
+
+// A certificate file read within the limits (a regular file of at most max_file_bytes), parsed
+// by read_json; not ok, with one line saying why, otherwise.
+JsonReading read_certificate_file(const std::string& path);
 
 // Thrown inside a claim checker; the verifier turns it into the report.
 struct Rejection {
@@ -53,15 +67,20 @@ struct Rejection {
 // step counter.
 class Context {
 public:
-    Context(const Json& document, mpfr_prec_t precision)
-        : document_(document), precision_(precision), read_(std::make_shared<std::unordered_set<const Json*>>()) {}
+    Context(const Json& document, mpfr_prec_t precision, VerifySettings settings = {})
+        : document_(document),
+          precision_(precision),
+          settings_(std::move(settings)),
+          read_(std::make_shared<std::unordered_set<const Json*>>()) {}
     // The same document at another precision, sharing the record of what has been read.
     Context(const Context& other, mpfr_prec_t precision)
-        : document_(other.document_), precision_(precision), read_(other.read_) {}
+        : document_(other.document_), precision_(precision), settings_(other.settings_), read_(other.read_) {}
     const Json& document() const { return document_; }
+    const VerifySettings& settings() const { return settings_; }
     mpfr_prec_t precision() const { return precision_; }
     long steps() const { return steps_; }
     void count_step() { ++steps_; }
+    void count_steps(long steps) { steps_ += steps; }
     // The step being checked, named in the report if an evaluation leaves its domain.
     std::string current_step;
 
@@ -84,6 +103,7 @@ public:
 private:
     const Json& document_;
     mpfr_prec_t precision_;
+    VerifySettings settings_;
     long steps_ = 0;
     std::shared_ptr<std::unordered_set<const Json*>> read_;
 };

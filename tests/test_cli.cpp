@@ -89,7 +89,8 @@ TEST_CASE("critical: its limits are one-line errors, exit 2, before any computat
                                   "critical --p 2 --gap -0.1", "critical --p 2 --threads 0", "critical --p 2 --threads 65",
                                   "critical --p 2 --shard 3/2", "critical --p 2 --shard 0/169", "critical --p 2 --shard x",
                                   "critical --p 2 --max-boxes 0", "critical --gap 0.1", "critical --p 2 --around 0",
-                                  "critical --p 2 --around 0.02", "critical --p 2 --around x"}) {
+                                  "critical --p 2 --around 0.02", "critical --p 2 --around x", "critical --p 2 --split 9",
+                                  "critical --p 2 --split 1 --around 1e-5", "critical --p 2 --split 1 --shard 0/337"}) {
         INFO(arguments);
         const Run result = run(arguments);
         CHECK(result.status == 2);
@@ -181,9 +182,15 @@ TEST_CASE("critical --around R --certificate FILE: the boxes around C1's images,
                 "writes no certificate");
     // A shard document whose box count is not its shard's.
     auto edited = nlohmann::json::parse(std::ifstream(scratch.path + "/around.json"));
-    edited["shard"] = {{"index", 0}, {"count", 1}, {"top_level_boxes", 168}};
+    edited["shard"] = {{"index", 0}, {"count", 1}, {"top_level_boxes", 168}, {"split", 0}};
     std::ofstream(scratch.path + "/forged.json") << edited.dump();
-    check_error("critical --merge " + scratch.path + "/forged.json", 2, "has 4 top-level boxes, not 168");
+    check_error("critical --merge " + scratch.path + "/forged.json", 2, "has 4 start boxes, not 168");
+    // --cover joins shards' certificates only: the file written above holds 4 start boxes of
+    // no split domain, and a cover must be written beside its parts.
+    check_error("critical --cover " + file + " --certificate " + scratch.path + "/cover.json", 2, "start boxes, not 168 * 2^K");
+    check_error("verify --threads 65 " + file, 2, "--threads: 1 to 64");
+    check_error("critical --cover " + file, 2, "--certificate FILE is required");
+    check_error("critical --cover " + file + " --certificate /tmp/elsewhere/cover.json", 2, "not in the directory");
     // D14 at p = 3/5 has seven contact pairs: no closing region in the six-pair chart (after the
     // progress line of best).
     const Run seven = run("critical --p 0.6 --around 1e-5");

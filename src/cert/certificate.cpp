@@ -63,13 +63,16 @@ Json certificate_head(const std::string& command, const Field& field, long digit
     return head;
 }
 
-Json certificate_document(Json head, Json claim, Json inputs, Json proof) {
+Json certificate_document(Json head, Json claim, Json inputs, Json proof, const std::string& directory, int threads) {
     // The text, which the checker renders, goes between the kind and the data.
     head["claim"] = Json{{"kind", claim["kind"]}, {"text", ""}, {"data", std::move(claim["data"])}};
     head["inputs"] = std::move(inputs);
     head["proof"] = std::move(proof);
     // claim.text is compared last: a rejection there means every other step passed.
-    const superpack_checker::VerifyReport report = superpack_checker::verify_document(head);
+    superpack_checker::VerifySettings settings;
+    settings.directory = directory;
+    settings.threads = threads;
+    const superpack_checker::VerifyReport report = superpack_checker::verify_document(head, settings);
     const bool only_text = report.verdict == superpack_checker::Verdict::invalid && report.path == "claim.text";
     if (report.verdict != superpack_checker::Verdict::valid && !only_text)
         throw CertificateRejected("the checker rejects this certificate at " + (report.path.empty() ? "(head)" : report.path) +

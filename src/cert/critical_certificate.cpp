@@ -76,7 +76,7 @@ Json critical_certificate(const CriticalResult<I>& result, const CriticalOptions
     for (const std::string& tree : result.trees) bytes += tree.size();
     if (bytes > critical_certificate_bytes - (std::size_t{1} << 20))
         throw InputError("critical --certificate: the trees take " + std::to_string(bytes) +
-                         " bytes, above the checker's file limit of 16 MiB: certify fewer boxes (--around R)");
+                         " bytes, above the checker's file limit of 16 MiB: certify fewer boxes (more shards, at a larger --split)");
     const DoubleField field;
     Json boxes = Json::array(), regions = Json::array();
     for (const ChartBox<I>& box : result.boxes) boxes.push_back(chart_box_json(box));
@@ -94,6 +94,19 @@ Json critical_certificate(const CriticalResult<I>& result, const CriticalOptions
     const Json inputs{{"p", rational_text(options.p)}, {"p_decimal", decimal_or_fraction_text(options.p)},
                       {"gap", rational_text(options.gap)}};
     return certificate_document(certificate_head("critical", field, 15), claim, inputs, proof);
+}
+
+Json critical_cover_certificate(const CoverParts& parts, const std::string& directory, int threads) {
+    const DoubleField field;
+    const Json data{{"p", parts.p},
+                    {"threshold", parts.threshold},
+                    {"volume", parts.volume},
+                    {"upper_phi", parts.upper_phi},
+                    {"split", parts.split}};
+    const Json claim{{"kind", "critical-lattice-cover"}, {"data", data}};
+    const Json inputs{{"p", parts.p}, {"p_decimal", parts.p_decimal}, {"gap", parts.gap}};
+    const Json proof{{"kind", "critical-lattice-cover"}, {"files", parts.names}};
+    return certificate_document(certificate_head("critical", field, 15), claim, inputs, proof, directory, threads);
 }
 
 }  // namespace superpack

@@ -1,9 +1,11 @@
 // superpack critical --p P [--gap G] [--threads N] [--shard i/n] [--max-boxes M] [--around R]
 //                    [--certificate FILE] [--json]
 // superpack critical --merge FILE... [--json]
+// superpack critical --cover CERTIFICATE... --certificate FILE [--threads N] [--json]
 // A certified upper bound on the lattice packing density at p (problems/critical.hpp, NOTES 12),
 // run whole or in shards whose JSON documents --merge sums into the whole domain's result.
 #include <chrono>
+#include <filesystem>
 #include <memory>
 
 #include "common.hpp"
@@ -18,8 +20,8 @@ namespace {
 
 struct CriticalCommandOptions {
     std::string p, gap = "0", shard = "0/1", around, certificate;
-    std::vector<std::string> merge;
-    int threads = 1;
+    std::vector<std::string> merge, cover;
+    int threads = 1, split = 0;
     long max_boxes = 50000000;
     bool json = false;
 };
@@ -27,16 +29,16 @@ struct CriticalCommandOptions {
 constexpr int max_threads = 64;
 constexpr long max_box_budget = 2000000000;
 
-// --shard i/n with 0 <= i < n <= the number of top-level boxes.
-std::pair<int, int> parse_shard(const std::string& text) {
+// --shard i/n with 0 <= i < n <= the number of start boxes.
+std::pair<int, int> parse_shard(const std::string& text, long start_boxes) {
     const std::size_t slash = text.find('/');
-    const std::string limit = "--shard: i/n with 0 <= i < n <= " + std::to_string(top_level_boxes);
+    const std::string limit = "--shard: i/n with 0 <= i < n <= " + std::to_string(start_boxes) + " (the start boxes)";
     if (slash == std::string::npos || text.size() > 20) throw InputError(limit + ", got \"" + text.substr(0, 20) + "\"");
     try {
         std::size_t used_i = 0, used_n = 0;
         const int i = std::stoi(text.substr(0, slash), &used_i);
         const int n = std::stoi(text.substr(slash + 1), &used_n);
-        if (used_i != slash || used_n != text.size() - slash - 1 || i < 0 || n < 1 || i >= n || n > top_level_boxes)
+        if (used_i != slash || used_n != text.size() - slash - 1 || i < 0 || n < 1 || i >= n || n > start_boxes)
             throw InputError(limit + ", got \"" + text + "\"");
         return {i, n};
     } catch (const std::logic_error&) {
@@ -103,7 +105,7 @@ void print_table(const CriticalResult<DInterval>& result, const CriticalOptions&
                   << "bound holds on them only\n";
     else if (result.partial_domain)
         std::cout << "domain       shard " << options.shard << "/" << options.shards << ": " << result.start_boxes << " of "
-                  << top_level_boxes << " top-level boxes (the bound needs every shard)\n";
+                  << (static_cast<long>(top_level_boxes) << options.split) << " start boxes (the bound needs every shard)\n";
     std::cout << "status       " << (result.status == Outcome::proved ? "proved" : "undecided") << ": " << result.message << "\n"
               << "boxes        " << result.processed << " evaluated; leaves:";
     for (int r = 0; r < box_reasons; ++r)
@@ -139,7 +141,8 @@ void print_result(const CriticalResult<DInterval>& result, const CriticalOptions
         if (options.around > 0)
             document["domain"] = "around the best lattice's images";
         else
-            document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes}};
+            document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes},
+                                 {"split", options.split}};
         document.update(result_json(result));
         print_json(document);
     } else {
@@ -154,8 +157,9 @@ void run_merge(const CriticalCommandOptions& command) {
     if (!command.p.empty() || command.shard != "0/1")
         throw InputError("critical --merge: takes p, the gap and the shards from the files; give no --p or --shard");
     // A merge re-runs no box, so it has no trees to certify (NOTES.md 12.7) and no boxes to place.
-    if (!command.certificate.empty() || !command.around.empty())
-        throw InputError("critical --merge: writes no certificate and takes no --around (it re-runs no box)");
+    if (!command.certificate.empty() || !command.around.empty() || command.split != 0)
+        throw InputError("critical --merge: writes no certificate and takes no --around or --split (it re-runs no box; the "
+                         "split is the shards')");
     std::vector<ShardDocument> documents;
     std::vector<ShardSummary> summaries;
     for (const std::string& path : command.merge) {
@@ -178,6 +182,35 @@ void run_merge(const CriticalCommandOptions& command) {
     print_result(merge_shards(setup, summaries), options, documents.front().p_exact, true, command.json);
 }
 
+// --cover: the shards' certificates named by one cover certificate, which the checker replays in
+// full (all of them, on --threads) before it is written.
+void run_cover(const CriticalCommandOptions& command) {
+    if (!command.p.empty() || command.shard != "0/1" || !command.around.empty() || command.split != 0 || !command.merge.empty())
+        throw InputError("critical --cover: takes p, the gap, T and the split from the certificates; give no --p, --shard, "
+                         "--split, --around or --merge");
+    if (command.certificate.empty()) throw InputError("critical --cover: --certificate FILE is required (the cover to write)");
+    if (command.threads < 1 || command.threads > max_threads)
+        throw InputError("--threads: 1 to " + std::to_string(max_threads) + ", got " + std::to_string(command.threads));
+    const CoverParts parts = read_cover_parts(command.cover, command.certificate);
+    std::cerr << "critical --cover: replaying the " << parts.names.size() << " certificates with the checker on "
+              << command.threads << (command.threads == 1 ? " thread\n" : " threads\n");
+    const std::string directory = std::filesystem::absolute(command.certificate).parent_path().string();
+    const Json document = critical_cover_certificate(parts, directory, command.threads);
+    write_certificate(command.certificate, document);
+    const std::string claim = document["claim"]["text"].get<std::string>();
+    if (command.json) {
+        const DoubleField field;
+        Json out = header_json("critical", field, 15);
+        out["cover"] = {{"files", parts.names.size()}, {"split", parts.split}, {"certificate", command.certificate}};
+        out["claim"] = claim;
+        print_json(out);
+    } else {
+        std::cout << "cover        " << parts.names.size() << " certificates at --split " << parts.split
+                  << ", replayed by the checker: " << command.certificate << "\n"
+                  << "claim        " << claim << "\n";
+    }
+}
+
 // --around R: 0 < R <= 1/100, checked before any computation.
 double parse_around(const std::string& text) {
     const Rational radius = parse_number(text, "--around");
@@ -187,6 +220,10 @@ double parse_around(const std::string& text) {
 }
 
 int run(const CriticalCommandOptions& command) {
+    if (!command.cover.empty()) {
+        run_cover(command);
+        return exit_ok;
+    }
     if (!command.merge.empty()) {
         run_merge(command);
         return exit_ok;
@@ -202,7 +239,11 @@ int run(const CriticalCommandOptions& command) {
         throw InputError("--max-boxes: 1 to " + std::to_string(max_box_budget) + ", got " + std::to_string(command.max_boxes));
     options.threads = command.threads;
     options.max_boxes = command.max_boxes;
-    std::tie(options.shard, options.shards) = parse_shard(command.shard);
+    if (command.split < 0 || command.split > max_split)
+        throw InputError("--split: 0 to " + std::to_string(max_split) + ", got " + std::to_string(command.split));
+    if (command.split != 0 && !command.around.empty()) throw InputError("critical: --split and --around exclude each other");
+    options.split = command.split;
+    std::tie(options.shard, options.shards) = parse_shard(command.shard, static_cast<long>(top_level_boxes) << options.split);
     options.around = command.around.empty() ? 0 : parse_around(command.around);
     const DoubleField field;
     std::cerr << "critical: certifying the densest lattice at p (best)\n";
@@ -233,20 +274,27 @@ void add_critical(CLI::App& app) {
                         "relative gap 0 <= G < 1/2: prove |det| >= (1 - G) |det| of the best lattice (default 0)");
     command->add_option("--threads", options->threads, "worker threads, 1 to " + std::to_string(max_threads) + " (default 1)");
     command->add_option("--shard", options->shard,
-                        "i/n: only the top-level boxes whose index is i mod n (0 <= i < n <= " +
-                            std::to_string(top_level_boxes) + "; default 0/1)");
+                        "i/n: only the start boxes whose index is i mod n (0 <= i < n <= the start boxes, " +
+                            std::to_string(top_level_boxes) + " * 2^K at --split K; default 0/1)");
+    command->add_option("--split", options->split,
+                        "K: bisect each of the " + std::to_string(top_level_boxes) + " top-level boxes K times first (0 to " +
+                            std::to_string(max_split) + ", default 0), for shards whose certificates stay small");
     command->add_option("--max-boxes", options->max_boxes,
                         "boxes evaluated at most, 1 to " + std::to_string(max_box_budget) +
                             " (default 5e7); the rest stay undecided");
     command->add_option("--merge", options->merge,
                         "FILE...: the --json documents of shards 0/n to n-1/n (same p and gap), summed into the whole "
                         "domain's result (proved iff every shard is; each file at most 1 MiB)");
+    command->add_option("--cover", options->cover,
+                        "CERTIFICATE...: the critical-lattice certificates of all shards of one run (same p, gap and "
+                        "--split, in one directory): write the cover certificate (--certificate FILE, same directory) "
+                        "that proves the bound on the whole domain; the checker replays every shard first");
     command->add_option("--around", options->around,
                         "R: instead of the whole domain, the chart boxes of half-width 0 < R <= 1/100 around the images "
                         "of the best lattice's closing region");
     command->add_option("--certificate", options->certificate,
                         "FILE: write the critical-lattice certificate (every tree, replayed by the checker first; at "
-                        "most 16 MiB, so with --around)");
+                        "most 16 MiB: --around, or a shard at --split K, whose certificates --cover joins)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
 }

@@ -1,8 +1,11 @@
-// Reading back the JSON documents of `superpack critical --shard i/n --json` for --merge.
+// Reading back the JSON documents of `superpack critical --shard i/n --json` for --merge, and the
+// shards' certificates for --cover.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "superpack/arith/enclosure_json.hpp"
+#include "superpack/cert/critical_certificate.hpp"
 #include "superpack/problems/critical.hpp"
 
 namespace superpack::cli {
@@ -18,5 +21,11 @@ ShardDocument read_shard_document(const std::string& path);
 
 // A shard document is at most this large (its undecided examples are capped at 20 boxes).
 constexpr long max_shard_bytes = 1 << 20;
+
+// The parts of a cover certificate at `cover` (the --certificate path): critical-lattice
+// certificates of shards, all in the cover's directory, at one p, gap and T, whose start boxes
+// number 168 * 2^K (K the split). InputError names the file otherwise; whether the boxes tile
+// the domain is the checker's to prove.
+CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::string& cover);
 
 }  // namespace superpack::cli

@@ -1,4 +1,4 @@
-// superpack verify FILE [--json]: runs the independent checker, superpack-verify, which is
+// superpack verify FILE [--json] [--threads N]: runs the independent checker, superpack-verify, which is
 // built beside this executable and shares no code with it (checker/).
 #include <unistd.h>
 
@@ -16,6 +16,7 @@ namespace {
 struct VerifyOptions {
     std::string file;
     bool json = false;
+    int threads = 0;  // 0: the checker's default, every core
 };
 
 // The directory this executable was started from.
@@ -31,6 +32,10 @@ std::string own_directory() {
     const std::string checker = own_directory() + "/superpack-verify";
     std::vector<std::string> arguments{checker};
     if (options.json) arguments.push_back("--json");
+    if (options.threads != 0) {  // the checker enforces its limit
+        arguments.push_back("--threads");
+        arguments.push_back(std::to_string(options.threads));
+    }
     arguments.push_back("--");
     arguments.push_back(options.file);
     std::vector<char*> argv;
@@ -49,6 +54,8 @@ void add_verify(CLI::App& app) {
         "verify", "Replay a certificate with the independent checker superpack-verify (exit 0 valid, 1 invalid, 2 unreadable)");
     command->add_option("file", options->file, "the certificate (JSON)")->required();
     command->add_flag("--json", options->json, "print one JSON document on stdout");
+    command->add_option("--threads", options->threads,
+                        "files of a critical-lattice-cover replayed at once, 1 to 64 (default or 0: every core)");
     command->callback([options] { run(*options); });
 }
 

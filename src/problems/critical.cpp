@@ -53,6 +53,18 @@ std::vector<ChartBox<DInterval>> top_level_domain() {
     return boxes;
 }
 
+std::vector<ChartBox<DInterval>> split_domain(int split) {
+    if (split < 0 || split > max_split) throw InputError("--split: 0 to " + std::to_string(max_split) + ", got " + std::to_string(split));
+    std::vector<ChartBox<DInterval>> boxes = top_level_domain();
+    for (int level = 0; level < split; ++level) {
+        std::vector<ChartBox<DInterval>> halves;
+        for (const ChartBox<DInterval>& box : boxes)
+            for (const ChartBox<DInterval>& half : split_box(box)) halves.push_back(half);
+        boxes.swap(halves);
+    }
+    return boxes;
+}
+
 ChartBox<DInterval> chart_box_around(const DoubleBasis& basis, MinkowskiCase configuration, double half_width) {
     ChartBox<DInterval> box;
     box.configuration = configuration;
@@ -228,7 +240,7 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
     CriticalResult<DInterval> result = critical_setup(reference, options);
     WorkQueue queue;
     const std::vector<ChartBox<DInterval>> domain = options.around > 0          ? boxes_around_images(result, options.around)
-                                                    : options.start_boxes.empty() ? top_level_domain()
+                                                    : options.start_boxes.empty() ? split_domain(options.split)
                                                                                   : options.start_boxes;
     for (std::size_t k = 0; k < domain.size(); ++k)
         if (static_cast<int>(k % static_cast<std::size_t>(options.shards)) == options.shard) queue.stack.push_back(domain[k]);
@@ -288,6 +300,10 @@ void require_shard_cover(const std::vector<ShardSummary>& shards) {
     const int count = shards.front().count;
     std::vector<bool> seen(static_cast<std::size_t>(count), false);
     for (const ShardSummary& shard : shards) {
+        if (shard.split != shards.front().split)
+            throw InputError("critical --merge: shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
+                             " was run at --split " + std::to_string(shard.split) + ", the first at " +
+                             std::to_string(shards.front().split));
         if (shard.count != count)
             throw InputError("critical --merge: shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
                              " is not one of " + std::to_string(count) + " shards");

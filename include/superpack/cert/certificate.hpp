@@ -38,7 +38,8 @@ Json certificate_head(const std::string& command, const Field& field, long digit
 // proof tree, replays it with the checker (checker/verifier.hpp) in memory and sets claim.text
 // to the checker's rendering of the claim, so that a certificate written always verifies.
 // Throws CertificateRejected ("the checker rejects this certificate at PATH: ...") otherwise.
-Json certificate_document(Json head, Json claim, Json inputs, Json proof);
+// A cover certificate's parts are files in `directory`, replayed on `threads`.
+Json certificate_document(Json head, Json claim, Json inputs, Json proof, const std::string& directory = "", int threads = 1);
 
 // Runs the rounding self-test again (a library may have changed the mode since start-up) and
 // writes atomically; throws std::runtime_error (naming the failed check) without touching

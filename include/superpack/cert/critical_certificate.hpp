@@ -18,4 +18,18 @@ constexpr std::size_t critical_certificate_bytes = std::size_t{16} << 20;
 // (CriticalOptions::record_trees), and InputError when the trees exceed the checker's limit.
 Json critical_certificate(const CriticalResult<DInterval>& result, const CriticalOptions& options);
 
+// What a cover certificate repeats of its parts (critical-lattice certificates of the shards of
+// one run at --split K), as read from them; `names` are the parts' file names in the cover's
+// directory, where the checker opens them.
+struct CoverParts {
+    Json p, p_decimal, gap, threshold, volume, upper_phi;
+    int split = 0;
+    std::vector<std::string> names;
+};
+
+// The certificate of claim kind "critical-lattice-cover" (NOTES.md 12.9): the bound on the whole
+// domain from the parts, which the checker replays in full (on `threads`, from `directory`)
+// before the cover is written. Throws CertificateRejected when a part or the tiling fails.
+Json critical_cover_certificate(const CoverParts& parts, const std::string& directory, int threads);
+
 }  // namespace superpack

@@ -60,6 +60,14 @@ struct ChartBox {
 constexpr int top_level_boxes = 2 * (cube_faces * (cube_faces + 1) / 2) * 4;
 std::vector<ChartBox<DInterval>> top_level_domain();
 
+// The start boxes of a run at --split K: each top-level box bisected K times by the branch and
+// bound's own rule (the median of the widest coordinate, NOTES.md 12.8), in order: top-level box
+// by top-level box, the lower half first. 2^K of them per top-level box, so that a shard's
+// certificate stays below the checker's file limit (one top-level box at p = 2 has 178,519 boxes,
+// about 16 MB of tree) and the shards' work is spread.
+constexpr int max_split = 8;
+std::vector<ChartBox<DInterval>> split_domain(int split);
+
 // The chart box of half-width h around a basis already in the chart's normal form (b1 in the
 // cone, b1[0] its largest entry; v2, v3 on the faces of their largest entries), clipped to the
 // chart's ranges: where tests and benchmarks start, around the images of a minimiser.
@@ -87,6 +95,7 @@ struct CriticalOptions {
     Rational gap{0};
     int threads = 1;
     int shard = 0, shards = 1;
+    int split = 0;                // the start boxes are split_domain(split)
     long max_boxes = 50000000;    // boxes evaluated; the rest become undecided_budget leaves
     double min_width = 1e-10;     // no box narrower than this in every coordinate is split
     double region_radius = 1e-2;  // the first radius tried for a closing region
@@ -156,15 +165,15 @@ CriticalResult<DInterval> critical_setup(const CriticalReference<DInterval>& ref
 
 // One shard's result as `critical --merge` reads it back (its T already matched the setup's).
 struct ShardSummary {
-    int index = 0, count = 1;
+    int index = 0, count = 1, split = 0;
     bool proved = false;
     std::array<long, box_reasons> counts{};
     long processed = 0, start_boxes = 0;
     double seconds = 0;
 };
 
-// Shards i/n, each i in 0..n-1 exactly once, or an InputError naming one missing, repeated or
-// of another n.
+// Shards i/n, each i in 0..n-1 exactly once and all at one --split, or an InputError naming one
+// missing, repeated, or of another n or split.
 void require_shard_cover(const std::vector<ShardSummary>& shards);
 
 // The whole domain's result from shards that pass require_shard_cover: proved iff every shard
