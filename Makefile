@@ -4,7 +4,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 # CI sets WERROR=ON (.ci/run): warnings fail the build there.
 WERROR ?= OFF
 
-.PHONY: deps configure build demo test fuzz bench proofs clean
+.PHONY: deps configure build demo test fuzz bench proofs proofs-critical clean
 
 deps:
 	@scripts/install-deps.sh
@@ -37,6 +37,15 @@ bench: build
 
 proofs: build
 	@scripts/make-proofs.sh $(BUILD)
+
+# The whole-domain theorem of `critical` at CRITICAL_P (default 2), gap 0, as a verified certificate
+# (NOTES.md 12.9): 336 shard certificates at --split 4 and their cover, in out/critical-p<P>/
+# (about 250 MB at p = 2, too large for proofs/), then the cover replayed once more by
+# `superpack verify`. At p = 2 about 25 minutes on 2 cores; a stopped run resumes.
+CRITICAL_P ?= 2
+proofs-critical: build
+	scripts/critical-shards.sh $(CRITICAL_P) 0 out/critical-p$(CRITICAL_P) $(BUILD) 4 336
+	$(BUILD)/superpack verify out/critical-p$(CRITICAL_P)/whole.json
 
 clean:
 	rm -rf $(BUILD)
