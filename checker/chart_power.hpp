@@ -10,15 +10,24 @@
 
 namespace superpack_checker {
 
-// An exponent y with y - 1 beside it (the exponent of the derivative kernel), each with 4y (or
-// 4(y - 1)) when it is a point k/4 with a small k, else no_quarters: then the power is taken by
-// products and square roots instead of exp(y log x) (2p and 2p - 1 at every half-integer p,
-// 1/(2p) at p = 1 and 2).
+// A point exponent a/b with 1 <= b <= max_root and |a| <= max_power (denominator 0: none), which
+// the power takes as the b-th root of e^|a|, each rounded outward by MPFR (inverted for a < 0),
+// instead of exp(y log e): exp and log are the dearest operations of the replay. Every exponent
+// of the chart is such a point at a p = m/n with small m and n (2p, 2p - 1, 1/(2p), 1/(2p) - 1:
+// at p = 3/5 they are 6/5, 1/5, 5/6 and -1/6).
+struct ExactExponent {
+    long numerator = 0;
+    unsigned long denominator = 0;
+};
+constexpr unsigned long max_root = 64;
+constexpr long max_power = 256;
+
+// An exponent y with y - 1 beside it (the exponent of the derivative kernel), each enclosed and,
+// where it is such a point, exact.
 struct Exponent {
     Real y, y_minus_one;
-    long quarters, quarters_minus_one;
+    ExactExponent exact, exact_minus_one;
 };
-constexpr long no_quarters = 1L << 40;
 Exponent exponent(const mpq_class& y, mpfr_prec_t precision);
 
 // |x|^y for y >= 0 (0^y needs y > 0).
