@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "checker/verifier.hpp"
-#include "superpack/cert/critical_certificate.hpp"
+#include "critical_certificates.hpp"
 #include "support.hpp"
 #include "tamper.hpp"
 
@@ -21,17 +21,8 @@ using Document = nlohmann::json;
 
 // critical at p = 2, gap 0, on the boxes of half-width 1e-5 around C1's images, with its trees.
 const Document& certificate_around_c1() {
-    static const Document document = [] {
-        using namespace superpack;
-        const CriticalReference<DInterval> reference = critical_reference(Rational(2), DoubleField{});
-        CriticalOptions options;
-        options.p = Rational(2);
-        options.record_trees = true;
-        options.around = 1e-5;
-        const CriticalResult<DInterval> result = critical_bound(reference, options);
-        REQUIRE(result.status == Outcome::proved);
-        return Document::parse(critical_certificate(result, options).dump());
-    }();
+    static const Document document =
+        superpack::test::critical_certificate_at_p2([](superpack::CriticalOptions& options) { options.around = 1e-5; });
     return document;
 }
 

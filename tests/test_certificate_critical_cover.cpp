@@ -5,8 +5,6 @@
 // of the split domain uncovered, repeat one, or are not boxes of the split domain. A valid cover
 // needs the certificates of every shard of a whole run (minutes of CPU), so it is made and
 // replayed by `make proofs-critical`, not here.
-#include <stdlib.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -14,7 +12,8 @@
 
 #include "checker/critical_claim.hpp"
 #include "checker/verifier.hpp"
-#include "superpack/cert/critical_certificate.hpp"
+#include "critical_certificates.hpp"
+#include "scratch.hpp"
 #include "support.hpp"
 #include "tamper.hpp"
 
@@ -26,33 +25,19 @@ using superpack_checker::VerifySettings;
 using superpack_checker::verify_document;
 using Document = nlohmann::json;
 
-struct Scratch {
-    std::string path;
-    Scratch() {
-        std::string pattern = (std::filesystem::temp_directory_path() / "superpack-cover-XXXXXX").string();
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path = pattern;
-    }
-    ~Scratch() { std::filesystem::remove_all(path); }
+// A scratch directory the parts are written to.
+struct Scratch : superpack::test::Scratch {
     void write(const std::string& name, const Document& document) const { std::ofstream(path + "/" + name) << document.dump(); }
 };
 
 // The certificate of start box 5 of the domain split 3 times at p = 2, gap 0 (shard 5/1344): one
 // start box, a few hundred boxes in its tree.
 const Document& part_certificate() {
-    static const Document document = [] {
-        using namespace superpack;
-        const CriticalReference<DInterval> reference = critical_reference(Rational(2), DoubleField{});
-        CriticalOptions options;
-        options.p = Rational(2);
-        options.record_trees = true;
+    static const Document document = superpack::test::critical_certificate_at_p2([](superpack::CriticalOptions& options) {
         options.split = 3;
         options.shard = 5;
-        options.shards = top_level_boxes << 3;
-        const CriticalResult<DInterval> result = critical_bound(reference, options);
-        REQUIRE(result.status == Outcome::proved);
-        return Document::parse(critical_certificate(result, options).dump());
-    }();
+        options.shards = superpack::top_level_boxes << 3;
+    });
     return document;
 }
 

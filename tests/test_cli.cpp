@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli_run.hpp"
+#include "scratch.hpp"
 #include "support.hpp"
 #include "superpack/arith/arb_access.hpp"
 
@@ -28,15 +29,7 @@ double width_of(const nlohmann::json& enclosure) {
 }
 
 // A fresh empty directory, removed afterwards.
-struct Scratch {
-    std::string path;
-    Scratch() {
-        std::string pattern = (std::filesystem::temp_directory_path() / "superpack-cli-XXXXXX").string();
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path = pattern;
-    }
-    ~Scratch() { std::filesystem::remove_all(path); }
-};
+using superpack::test::Scratch;
 
 std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
