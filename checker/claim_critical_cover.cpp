@@ -5,14 +5,16 @@
 //   1. every named file is a valid critical-lattice certificate (each replayed here in full by
 //      verify_document, several at once on the threads allowed);
 //   2. all are at this certificate's p, T and gap;
-//   3. their start boxes are the chart domain split K times (chart_domain, K = claim.data.split),
-//      each in exactly one file;
+//   3. their start boxes tile the chart domain split K times (chart_domain, K = claim.data.split):
+//      each box of it is a start box, or its two halves by the same rule are each tiled so, at
+//      most max_cover_depth halvings deeper; every start box is met once and lies in one file;
 //   4. V(K) and V(K) / T are enclosed as in a critical-lattice claim.
 // Then every lattice packing of K whose chart basis satisfies its configuration has |det| >= T,
 // on every start box, so on the whole domain. A part is never itself a cover.
 //
 // Keys read: claim.data {p, threshold, volume, upper_phi, split}; inputs {p, p_decimal, gap};
 // proof {kind, files}.
+#include <algorithm>
 #include <atomic>
 #include <iostream>
 #include <map>
@@ -41,6 +43,14 @@ struct Part {
     std::vector<DomainBox> boxes;
     std::string failure;  // a reading failure, or a value the cover needs that the part lacks
 };
+
+// `inner` within `outer`: the same configuration and faces, and every coordinate's range inside.
+bool contains(const DomainBox& outer, const DomainBox& inner) {
+    if (outer.configuration != inner.configuration || outer.face2 != inner.face2 || outer.face3 != inner.face3) return false;
+    for (int k = 0; k < chart_dimension; ++k)
+        if (inner.ends[2 * k] < outer.ends[2 * k] || outer.ends[2 * k + 1] < inner.ends[2 * k + 1]) return false;
+    return true;
+}
 
 // A file name in the cover's directory: no directory part, no "." or "..".
 bool plain_name(const std::string& name) {
@@ -134,12 +144,13 @@ std::string check_critical_cover(const Json& claim, Context& context) {
     if (directory.empty())
         context.malformed("proof.files", "a cover names files in its directory: verify it as a file (superpack verify FILE)");
 
-    // 1-3. Every part replayed, compared, and its start boxes placed in the split domain.
+    // 1-3. Every part replayed and compared; each of its start boxes placed on its path of halvings
+    // from a box of the split domain.
     const std::vector<Part> parts = replay_parts(directory, names, std::max(1, context.settings().threads));
-    const std::vector<DomainBox> domain = chart_domain(split);
-    std::map<DomainBox, std::size_t> index;
-    for (std::size_t k = 0; k < domain.size(); ++k) index.emplace(domain[k], k);
-    std::vector<long> owner(domain.size(), -1);
+    const std::vector<DomainBox> top = chart_domain(0);
+    std::map<DomainBox, std::pair<std::size_t, bool>> owner;  // start box -> its file, and whether the walk met it
+    std::set<DomainBox> interior;                              // halved on the way to some start box
+    std::size_t start_boxes = 0;
     for (std::size_t k = 0; k < names.size(); ++k) {
         const std::string at = "proof.files[" + std::to_string(k) + "]", name = names[k];
         context.current_step = at;
@@ -157,26 +168,63 @@ std::string check_critical_cover(const Json& claim, Context& context) {
         context.require(part.gap == gap, at, name + " was made at another gap");
         context.require(mpfr_equal_p(part.threshold.lo(), bound.threshold.lo()) != 0, at, name + " proves another T");
         for (std::size_t j = 0; j < part.boxes.size(); ++j) {
-            const auto found = index.find(part.boxes[j]);
-            const std::string box = name + "'s start box " + std::to_string(j);
-            context.require(found != index.end(), at,
-                            box + " (" + domain_box_text(part.boxes[j]) + ") is not a box of the chart domain split " +
-                                std::to_string(split) + " times");
-            const long first = owner[found->second];
-            context.require(first < 0, at, box + " is also a start box of " + (first < 0 ? "" : names[static_cast<std::size_t>(first)]));
-            owner[found->second] = static_cast<long>(k);
+            const DomainBox& box = part.boxes[j];
+            const std::string which = name + "'s start box " + std::to_string(j) + " (" + domain_box_text(box) + ")";
+            const auto placed = owner.emplace(box, std::make_pair(k, false));
+            context.require(placed.second, at,
+                            which + " is also a start box of " + names[placed.first->second.first]);
+            ++start_boxes;
+            const auto root = std::find_if(top.begin(), top.end(), [&](const DomainBox& t) { return contains(t, box); });
+            context.require(root != top.end(), at, which + " is not in the chart domain");
+            DomainBox node = *root;
+            int depth = 0;
+            while (!(node == box)) {
+                context.require(depth < split + max_cover_depth, at,
+                                which + " is not a box of the domain halved by the split rule");
+                if (depth >= split) interior.insert(node);
+                const std::array<DomainBox, 2> two = halves(node);
+                const bool lower = contains(two[0], box);
+                context.require(lower || contains(two[1], box), at, which + " straddles a halving of the split rule");
+                node = two[lower ? 0 : 1];
+                ++depth;
+            }
+            context.require(depth >= split, at,
+                            which + " is larger than a box of the chart domain split " + std::to_string(split) + " times");
         }
     }
+    // Every box of the split domain is a start box or the union of its halves' covers.
     context.current_step = "proof.files";
-    for (std::size_t k = 0; k < domain.size(); ++k)
-        context.require(owner[k] >= 0, "proof.files",
-                        "start box " + std::to_string(k) + " of the split domain (" + domain_box_text(domain[k]) + ") is in no file");
+    const std::vector<DomainBox> domain = chart_domain(split);
+    for (std::size_t k = 0; k < domain.size(); ++k) {
+        std::vector<DomainBox> stack{domain[k]};
+        while (!stack.empty()) {
+            const DomainBox node = stack.back();
+            stack.pop_back();
+            const auto found = owner.find(node);
+            if (found != owner.end()) {
+                found->second.second = true;
+                continue;
+            }
+            context.require(interior.count(node) != 0, "proof.files",
+                            "start box " + std::to_string(k) + " of the split domain (" + domain_box_text(domain[k]) +
+                                ") is not covered: its piece " + domain_box_text(node) + " is in no file");
+            const std::array<DomainBox, 2> two = halves(node);
+            stack.push_back(two[1]);
+            stack.push_back(two[0]);
+        }
+    }
+    // A start box the walk did not meet lies inside another start box.
+    for (const auto& entry : owner)
+        context.require(entry.second.second, "proof.files[" + std::to_string(entry.second.first) + "]",
+                        names[entry.second.first] + "'s start box (" + domain_box_text(entry.first) +
+                            ") lies inside another file's start box");
 
     // 4. The density bound.
     const Real upper_phi = read_upper_phi(context, data, bound);
-    return "At p = " + exact_text(p) + ", " + whole_domain_words(split) + ", replayed in the " + std::to_string(names.size()) +
+    return "At p = " + exact_text(p) + ", " + whole_domain_words(split, start_boxes) + ", replayed in the " +
+           std::to_string(names.size()) +
            " critical-lattice certificates of proof.files (each valid, all at this p, gap and T, their start boxes these " +
-           std::to_string(domain.size()) + " boxes, each in exactly one file): every lattice packing of the superball K = " +
+           std::to_string(start_boxes) + " boxes, each in exactly one file): every lattice packing of the superball K = " +
            "{|x|^(2p) + |y|^(2p) + |z|^(2p) <= 1} whose chart basis satisfies its configuration has |det| >= T >= " +
            lower_end_words(bound.threshold) + " (claim.data.threshold), " + whole_domain_consequence +
            upper_end_words(upper_phi) + " (the upper end of claim.data.upper_phi, which holds V(K) / T; V(K) in " +

@@ -93,7 +93,7 @@ std::string check_critical_lattice(const Json& claim, Context& context) {
         total += counts.leaves[r];
     }
     const std::string where =
-        whole ? whole_domain_words(0)
+        whole ? whole_domain_words(0, boxes.size())
               : "on the " + count_words(static_cast<long>(boxes.size()), "chart box", "chart boxes") +
                     " of proof.boxes (the chart of NOTES.md 12.2)";
     const std::string which = whole ? "whose chart basis satisfies its configuration"

@@ -54,6 +54,17 @@ std::string domain_box_text(const DomainBox& box) {
     return text.str();
 }
 
+std::array<DomainBox, 2> halves(const DomainBox& box) {
+    int widest = 0;
+    for (int k = 1; k < chart_dimension; ++k)
+        if (box.ends[2 * k + 1] - box.ends[2 * k] > box.ends[2 * widest + 1] - box.ends[2 * widest]) widest = k;
+    const double middle = box.ends[2 * widest] / 2 + box.ends[2 * widest + 1] / 2;
+    std::array<DomainBox, 2> result{box, box};
+    result[0].ends[2 * widest + 1] = middle;
+    result[1].ends[2 * widest] = middle;
+    return result;
+}
+
 std::vector<DomainBox> chart_domain(int split) {
     std::vector<DomainBox> boxes;
     for (const Configuration configuration : {Configuration::a3, Configuration::w})
@@ -64,28 +75,21 @@ std::vector<DomainBox> chart_domain(int split) {
                     boxes.push_back(DomainBox{configuration, face2, face3, {s, s + 0.5, t, t + 0.5, -1, 1, -1, 1, -1, 1, -1, 1}});
                 }
     for (int level = 0; level < split; ++level) {
-        std::vector<DomainBox> halves;
-        for (const DomainBox& box : boxes) {
-            int widest = 0;
-            for (int k = 1; k < chart_dimension; ++k)
-                if (box.ends[2 * k + 1] - box.ends[2 * k] > box.ends[2 * widest + 1] - box.ends[2 * widest]) widest = k;
-            const double middle = box.ends[2 * widest] / 2 + box.ends[2 * widest + 1] / 2;
-            DomainBox lower = box, upper = box;
-            lower.ends[2 * widest + 1] = middle;
-            upper.ends[2 * widest] = middle;
-            halves.push_back(lower);
-            halves.push_back(upper);
-        }
-        boxes.swap(halves);
+        std::vector<DomainBox> next;
+        for (const DomainBox& box : boxes)
+            for (const DomainBox& half : halves(box)) next.push_back(half);
+        boxes.swap(next);
     }
     return boxes;
 }
 
-std::string whole_domain_words(int split) {
-    const std::string pieces =
-        split == 0 ? std::string()
-                   : ", each bisected " + std::to_string(split) + (split == 1 ? " time" : " times") +
-                         " at the midpoint of its widest coordinate: " + std::to_string(168L << split) + " start boxes";
+std::string whole_domain_words(int split, std::size_t start_boxes) {
+    const bool uniform = start_boxes == (std::size_t{168} << split);
+    const std::string times = std::to_string(split) + (split == 1 ? " time" : " times") + (uniform ? "" : " or more");
+    const std::string pieces = split == 0 && uniform ? std::string()
+                                                     : ", each bisected " + times +
+                                                           " at the midpoint of its widest coordinate: " +
+                                                           std::to_string(start_boxes) + " start boxes";
     return "on the whole chart domain of NOTES.md 12.2 (the 168 top-level boxes: Minkowski's configurations A3 and W, "
            "faces face2 <= face3, s and t in [0, 1], a2, c2, a3, c3 in [-1, 1]" +
            pieces + ")";

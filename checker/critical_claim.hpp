@@ -36,9 +36,15 @@ std::string domain_box_text(const DomainBox& box);
 // Every end is a dyadic number of a few bits, so double arithmetic is exact here.
 constexpr int max_domain_split = 8;
 std::vector<DomainBox> chart_domain(int split);
+// The two halves of a box by that rule, lower first.
+std::array<DomainBox, 2> halves(const DomainBox& box);
+// A cover's start box may be a piece of a box of the split domain, halved by the same rule at most
+// this many times more (the branch and bound stops at widths of 1e-10, about 200 halvings).
+constexpr int max_cover_depth = 64;
 
-// The theorem's words on the whole domain: where, and its consequence for every lattice packing.
-std::string whole_domain_words(int split);
+// The theorem's words on the whole domain, cut into `start_boxes` pieces, each bisected at least
+// `split` times: where, and its consequence for every lattice packing.
+std::string whole_domain_words(int split, std::size_t start_boxes);
 extern const char* const whole_domain_consequence;
 
 }  // namespace superpack_checker

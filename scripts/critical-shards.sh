@@ -38,7 +38,7 @@ fi
 status=$?
 mv merged.tmp merged.json
 if [ "$status" = 0 ] && [ -n "$split" ]; then
-  "$build/superpack" critical --cover $(seq -f 'cert-%g.json' 0 $((shards - 1))) --certificate whole.json \
+  "$build/superpack" critical --cover $(seq -f 'cert-%g.json' 0 $((shards - 1))) --split "$split" --certificate whole.json \
     --threads "$(nproc)" > cover.txt 2> cover.err
   status=$?
 fi

@@ -30,14 +30,18 @@ struct Scratch : superpack::test::Scratch {
     void write(const std::string& name, const Document& document) const { std::ofstream(path + "/" + name) << document.dump(); }
 };
 
-// The certificate of start box 5 of the domain split 3 times at p = 2, gap 0 (shard 5/1344): one
-// start box, a few hundred boxes in its tree.
-const Document& part_certificate() {
-    static const Document document = superpack::test::critical_certificate_at_p2([](superpack::CriticalOptions& options) {
-        options.split = 3;
-        options.shard = 5;
-        options.shards = superpack::top_level_boxes << 3;
+// The certificate of start box `box` alone of the domain split `split` times at p = 2, gap 0.
+Document box_certificate(int split, int box) {
+    return superpack::test::critical_certificate_at_p2([&](superpack::CriticalOptions& options) {
+        options.split = split;
+        options.shard = box;
+        options.shards = superpack::top_level_boxes << split;
     });
+}
+
+// Start box 5 of the domain split 3 times (shard 5/1344): a few hundred boxes in its tree.
+const Document& part_certificate() {
+    static const Document document = box_certificate(3, 5);
     return document;
 }
 
@@ -113,12 +117,18 @@ TEST_CASE("critical-lattice-cover: each flaw rejected at the file that has it") 
 
     SECTION("one part of 1344 start boxes: every check passes up to the tiling, which leaves box 0 uncovered") {
         check_rejected(cover_of({"part.json"}), scratch, "proof.files", "start box 0 of the split domain");
+        check_rejected(cover_of({"part.json"}), scratch, "proof.files", "is not covered");
     }
     SECTION("the same start box in two files") {
         check_rejected(cover_of({"part.json", "copy.json"}), scratch, "proof.files[1]", "also a start box of part.json");
     }
-    SECTION("a start box that is not one of the split domain's") {
-        check_rejected(cover_of({"part.json"}, 2), scratch, "proof.files[0]", "is not a box of the chart domain split 2 times");
+    SECTION("a start box larger than the boxes of the cover's split domain") {
+        check_rejected(cover_of({"part.json"}, 4), scratch, "proof.files[0]", "is larger than a box of the chart domain split 4 times");
+    }
+    SECTION("a start box replaced by its two halves (boxes 10 and 11 at split 4): both placed, box 0 still uncovered") {
+        scratch.write("lower.json", box_certificate(4, 10));
+        scratch.write("upper.json", box_certificate(4, 11));
+        check_rejected(cover_of({"lower.json", "upper.json"}), scratch, "proof.files", "start box 0 of the split domain");
     }
     SECTION("a file named twice") {
         check_rejected(cover_of({"part.json", "part.json"}), scratch, "proof.files[1]", "named twice");

@@ -1,7 +1,7 @@
 // superpack critical --p P [--gap G] [--threads N] [--shard i/n] [--max-boxes M] [--around R]
 //                    [--certificate FILE] [--json]
 // superpack critical --merge FILE... [--json]
-// superpack critical --cover CERTIFICATE... --certificate FILE [--threads N] [--json]
+// superpack critical --cover CERTIFICATE... --split K --certificate FILE [--threads N] [--json]
 // A certified upper bound on the lattice packing density at p (problems/critical.hpp, NOTES 12),
 // run whole or in shards whose JSON documents --merge sums into the whole domain's result.
 #include <chrono>
@@ -185,13 +185,15 @@ void run_merge(const CriticalCommandOptions& command) {
 // --cover: the shards' certificates named by one cover certificate, which the checker replays in
 // full (all of them, on --threads) before it is written.
 void run_cover(const CriticalCommandOptions& command) {
-    if (!command.p.empty() || command.shard != "0/1" || !command.around.empty() || command.split != 0 || !command.merge.empty())
-        throw InputError("critical --cover: takes p, the gap, T and the split from the certificates; give no --p, --shard, "
-                         "--split, --around or --merge");
+    if (!command.p.empty() || command.shard != "0/1" || !command.around.empty() || !command.merge.empty())
+        throw InputError("critical --cover: takes p, the gap and T from the certificates; give no --p, --shard, --around or "
+                         "--merge (only the shards' --split)");
+    if (command.split < 0 || command.split > max_split)
+        throw InputError("--split: 0 to " + std::to_string(max_split) + ", got " + std::to_string(command.split));
     if (command.certificate.empty()) throw InputError("critical --cover: --certificate FILE is required (the cover to write)");
     if (command.threads < 1 || command.threads > max_threads)
         throw InputError("--threads: 1 to " + std::to_string(max_threads) + ", got " + std::to_string(command.threads));
-    const CoverParts parts = read_cover_parts(command.cover, command.certificate);
+    const CoverParts parts = read_cover_parts(command.cover, command.certificate, command.split);
     std::cerr << "critical --cover: replaying the " << parts.names.size() << " certificates with the checker on "
               << command.threads << (command.threads == 1 ? " thread\n" : " threads\n");
     const std::string directory = std::filesystem::absolute(command.certificate).parent_path().string();
@@ -286,9 +288,10 @@ void add_critical(CLI::App& app) {
                         "FILE...: the --json documents of shards 0/n to n-1/n (same p and gap), summed into the whole "
                         "domain's result (proved iff every shard is; each file at most 1 MiB)");
     command->add_option("--cover", options->cover,
-                        "CERTIFICATE...: the critical-lattice certificates of all shards of one run (same p, gap and "
-                        "--split, in one directory): write the cover certificate (--certificate FILE, same directory) "
-                        "that proves the bound on the whole domain; the checker replays every shard first");
+                        "CERTIFICATE...: the critical-lattice certificates of all shards of one run at --split K (same "
+                        "p and gap, in one directory; a shard too large may be replaced by the shards of its start "
+                        "boxes' halves at K + 1 or more): write the cover certificate (--certificate FILE, same "
+                        "directory) that proves the bound on the whole domain; the checker replays every shard first");
     command->add_option("--around", options->around,
                         "R: instead of the whole domain, the chart boxes of half-width 0 < R <= 1/100 around the images "
                         "of the best lattice's closing region");

@@ -78,7 +78,7 @@ ShardDocument read_shard_document(const std::string& path) {
     }
 }
 
-CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::string& cover) {
+CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::string& cover, int split) {
     const std::string who = "critical --cover";
     const std::filesystem::path directory = std::filesystem::weakly_canonical(std::filesystem::absolute(cover).parent_path());
     CoverParts parts;
@@ -112,11 +112,11 @@ CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::st
         parts.names.push_back(std::filesystem::path(path).filename().string());
     }
     if (paths.empty()) throw InputError(who + ": no certificates given");
-    while (parts.split < max_split && (static_cast<long>(top_level_boxes) << parts.split) < start_boxes) ++parts.split;
-    if ((static_cast<long>(top_level_boxes) << parts.split) != start_boxes)
-        throw InputError(who + ": the files hold " + std::to_string(start_boxes) + " start boxes, not " +
-                         std::to_string(top_level_boxes) + " * 2^K for a --split K of 0 to " + std::to_string(max_split) +
-                         ": some shard is missing or repeated");
+    parts.split = split;
+    if (start_boxes < (static_cast<long>(top_level_boxes) << split))
+        throw InputError(who + ": the files hold " + std::to_string(start_boxes) + " start boxes, fewer than the " +
+                         std::to_string(static_cast<long>(top_level_boxes) << split) + " = " + std::to_string(top_level_boxes) +
+                         " * 2^K of the domain at --split " + std::to_string(split) + ": some shard is missing");
     return parts;
 }
 

@@ -23,9 +23,10 @@ ShardDocument read_shard_document(const std::string& path);
 constexpr long max_shard_bytes = 1 << 20;
 
 // The parts of a cover certificate at `cover` (the --certificate path): critical-lattice
-// certificates of shards, all in the cover's directory, at one p, gap and T, whose start boxes
-// number 168 * 2^K (K the split). InputError names the file otherwise; whether the boxes tile
-// the domain is the checker's to prove.
-CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::string& cover);
+// certificates of shards, all in the cover's directory, at one p, gap and T, holding at least the
+// 168 * 2^K start boxes of the domain at --split K (more where a start box was replaced by its
+// halves: box k at --split K is boxes 2k and 2k + 1 at K + 1). InputError names the file
+// otherwise; whether the boxes tile the domain is the checker's to prove.
+CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::string& cover, int split);
 
 }  // namespace superpack::cli
