@@ -29,6 +29,11 @@ struct CriticalCommandOptions {
 constexpr int max_threads = 64;
 constexpr long max_box_budget = 2000000000;
 
+void require_threads(int threads) {
+    if (threads < 1 || threads > max_threads)
+        throw InputError("--threads: 1 to " + std::to_string(max_threads) + ", got " + std::to_string(threads));
+}
+
 // --shard i/n with 0 <= i < n <= the number of start boxes.
 std::pair<int, int> parse_shard(const std::string& text, long start_boxes) {
     const std::size_t slash = text.find('/');
@@ -188,11 +193,9 @@ void run_cover(const CriticalCommandOptions& command) {
     if (!command.p.empty() || command.shard != "0/1" || !command.around.empty() || !command.merge.empty())
         throw InputError("critical --cover: takes p, the gap and T from the certificates; give no --p, --shard, --around or "
                          "--merge (only the shards' --split)");
-    if (command.split < 0 || command.split > max_split)
-        throw InputError("--split: 0 to " + std::to_string(max_split) + ", got " + std::to_string(command.split));
+    require_split(command.split);
     if (command.certificate.empty()) throw InputError("critical --cover: --certificate FILE is required (the cover to write)");
-    if (command.threads < 1 || command.threads > max_threads)
-        throw InputError("--threads: 1 to " + std::to_string(max_threads) + ", got " + std::to_string(command.threads));
+    require_threads(command.threads);
     const CoverParts parts = read_cover_parts(command.cover, command.certificate, command.split);
     std::cerr << "critical --cover: replaying the " << parts.names.size() << " certificates with the checker on "
               << command.threads << (command.threads == 1 ? " thread\n" : " threads\n");
@@ -235,14 +238,12 @@ int run(const CriticalCommandOptions& command) {
     options.p = parse_p(command.p);
     options.gap = parse_number(command.gap, "--gap");
     require_critical_domain(options.p, options.gap);
-    if (command.threads < 1 || command.threads > max_threads)
-        throw InputError("--threads: 1 to " + std::to_string(max_threads) + ", got " + std::to_string(command.threads));
+    require_threads(command.threads);
     if (command.max_boxes < 1 || command.max_boxes > max_box_budget)
         throw InputError("--max-boxes: 1 to " + std::to_string(max_box_budget) + ", got " + std::to_string(command.max_boxes));
     options.threads = command.threads;
     options.max_boxes = command.max_boxes;
-    if (command.split < 0 || command.split > max_split)
-        throw InputError("--split: 0 to " + std::to_string(max_split) + ", got " + std::to_string(command.split));
+    require_split(command.split);
     if (command.split != 0 && !command.around.empty()) throw InputError("critical: --split and --around exclude each other");
     options.split = command.split;
     std::tie(options.shard, options.shards) = parse_shard(command.shard, static_cast<long>(top_level_boxes) << options.split);

@@ -53,8 +53,12 @@ std::vector<ChartBox<DInterval>> top_level_domain() {
     return boxes;
 }
 
-std::vector<ChartBox<DInterval>> split_domain(int split) {
+void require_split(int split) {
     if (split < 0 || split > max_split) throw InputError("--split: 0 to " + std::to_string(max_split) + ", got " + std::to_string(split));
+}
+
+std::vector<ChartBox<DInterval>> split_domain(int split) {
+    require_split(split);
     std::vector<ChartBox<DInterval>> boxes = top_level_domain();
     for (int level = 0; level < split; ++level) {
         std::vector<ChartBox<DInterval>> halves;

@@ -66,6 +66,7 @@ std::vector<ChartBox<DInterval>> top_level_domain();
 // certificate stays below the checker's file limit (one top-level box at p = 2 has 178,519 boxes,
 // about 16 MB of tree) and the shards' work is spread.
 constexpr int max_split = 8;
+void require_split(int split);  // InputError unless 0 <= split <= max_split
 std::vector<ChartBox<DInterval>> split_domain(int split);
 
 // The chart box of half-width h around a basis already in the chart's normal form (b1 in the
