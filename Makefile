@@ -38,13 +38,18 @@ bench: build
 proofs: build
 	@scripts/make-proofs.sh $(BUILD)
 
-# The whole-domain theorem of `critical` at CRITICAL_P (default 2), gap 0, as a verified certificate
-# (NOTES.md 12.9): 336 shard certificates at --split 4 and their cover, in out/critical-p<P>/
-# (about 250 MB at p = 2, too large for proofs/), then the cover replayed once more by
-# `superpack verify`. At p = 2 about 25 minutes on 2 cores; a stopped run resumes.
+# The whole-domain theorem of `critical` at CRITICAL_P (an exact decimal, default 2) and
+# CRITICAL_GAP (default 0) as a verified certificate (NOTES.md 12.9): CRITICAL_SHARDS shard
+# certificates at --split CRITICAL_SPLIT and their cover, in out/critical-p<P>/, then the cover
+# replayed once more by `superpack verify`. p = 2 (142 MB, too large for proofs/): about 25 minutes
+# on 2 cores. p = 3/5: CRITICAL_P=0.6 CRITICAL_GAP=9e-5 CRITICAL_SPLIT=6 CRITICAL_SHARDS=672. A
+# stopped run resumes.
 CRITICAL_P ?= 2
+CRITICAL_GAP ?= 0
+CRITICAL_SPLIT ?= 4
+CRITICAL_SHARDS ?= 336
 proofs-critical: build
-	scripts/critical-shards.sh $(CRITICAL_P) 0 out/critical-p$(CRITICAL_P) $(BUILD) 4 336
+	scripts/critical-shards.sh $(CRITICAL_P) $(CRITICAL_GAP) out/critical-p$(CRITICAL_P) $(BUILD) $(CRITICAL_SPLIT) $(CRITICAL_SHARDS)
 	$(BUILD)/superpack verify out/critical-p$(CRITICAL_P)/whole.json
 
 clean:

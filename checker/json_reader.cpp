@@ -21,6 +21,10 @@ std::string joined(const std::vector<std::string>& segments) {
     return path;
 }
 
+std::string values_message() {
+    return "more than " + std::to_string(max_json_values) + " values (max_json_values)";
+}
+
 std::string depth_message() {
     return "nested deeper than " + std::to_string(max_json_depth) + " levels of arrays and objects (max_json_depth)";
 }
@@ -82,6 +86,7 @@ private:
     }
 
     bool add(Json&& value) {
+        if (++values_ > max_json_values) return fail(values_message());
         place(std::move(value));
         return true;
     }
@@ -92,6 +97,7 @@ private:
             segments_.push_back(parent.is_array() ? "[" + std::to_string(parent.size()) + "]" : key_);
         }
         if (open_.size() >= max_json_depth) return fail(depth_message());
+        if (++values_ > max_json_values) return fail(values_message());
         open_.push_back(place(std::move(container)));
         return true;
     }
@@ -107,6 +113,7 @@ private:
     std::vector<std::string> segments_;
     std::string key_;
     Json* member_ = nullptr;
+    std::size_t values_ = 0;
 };
 
 template <class Input>

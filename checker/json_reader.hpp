@@ -1,6 +1,8 @@
 // Reading a certificate's JSON under the checker's limits (checker/limits.hpp): a SAX parse that
 // builds the document itself, so that it can refuse what nlohmann's own DOM parser accepts.
 //   - nesting deeper than max_json_depth is refused before the deeper value is built;
+//   - more than max_json_values values are refused before the next is built (the memory of a
+//     document follows its values, about 110 bytes each, more than its bytes);
 //   - a key that occurs twice in one object is refused (nlohmann keeps one of the two silently,
 //     so the checker and a reader of the file could see different certificates).
 // Each refusal names its path in the document (proof.cases[0].box) like the checker's rejections.

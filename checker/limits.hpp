@@ -8,10 +8,18 @@
 
 namespace superpack_checker {
 
-// The largest certificate file read, in bytes. The largest one in proofs/ is below 1 MB; a
-// 100000-digit certificate adds about 0.2 MB per exact interval. The parsed document takes at
-// most about 35 bytes of memory per byte of file (a file of empty objects), so at most 0.6 GB.
-constexpr std::uintmax_t max_file_bytes = std::uintmax_t{16} << 20;
+// The largest certificate file read, in bytes. A critical-lattice certificate is one long string
+// per start box, about 77 bytes per box near a closing region: a shard at p = 3 takes 22.9 MB,
+// and one box of the domain at --split 8 (the finest) still holds 2.7e5 of its 3.0e5 boxes
+// (NOTES.md 12.9). Memory follows the values of the document more than its bytes: the text, its
+// strings (at most the file again) and at most max_json_values values of about 110 bytes each,
+// so at most about 0.6 GB per file read.
+constexpr std::uintmax_t max_file_bytes = std::uintmax_t{64} << 20;
+// The values of one document (numbers, strings, booleans, nulls, arrays and objects; a key is
+// not one), counted while parsing and refused before the next is built. Certificates in proofs/
+// have at most 35221; a critical-lattice certificate has about 30 per start box, so
+// max_chart_boxes of them take 1.3e6.
+constexpr std::size_t max_json_values = std::size_t{1} << 22;
 
 // Nesting of JSON arrays and objects (the document itself is level 1). Certificates in proofs/
 // reach 22; the producer's partition trees are at most 201 splits deep (certificate_partition.hpp),
@@ -48,15 +56,17 @@ constexpr std::size_t max_rational_characters = 10000;
 constexpr std::size_t max_contact_pairs = 13;
 
 // The critical-lattice claim (claim_critical_lattice.cpp, NOTES.md 12.8). Start boxes: the whole
-// domain has 168, --around a few. Closing regions: one per certified optimum near T (one so far,
-// with 4 images in the chart at p = 2); the images are counted over all regions. A tree string is at most the file. Splits nest at most max_tree_depth deep (the
+// domain has 168, split 8 times (max_domain_split) 168 * 2^8, --around a few. Closing regions:
+// one per certified optimum near T (one so far, with 4 images in the chart at p = 2); the images
+// are counted over all regions. A tree string is at most the file. Splits nest at most
+// max_tree_depth deep (the
 // replay keeps its own stack, never recursion): the producer stops at widths of 1e-10, about
 // 33 halvings of each of the 6 coordinates, 200 levels. The entries of an image's W^-1 are
 // small integers (adjugates of contact coefficients); the bound keeps their products exact.
-constexpr std::size_t max_chart_boxes = 100000;
+constexpr std::size_t max_chart_boxes = std::size_t{168} << 8;
 constexpr std::size_t max_closing_regions = 16;
 constexpr std::size_t max_chart_images = 4096;
-constexpr std::size_t max_tree_characters = std::size_t{16} << 20;
+constexpr std::size_t max_tree_characters = std::size_t{64} << 20;
 constexpr std::size_t max_tree_depth = 1024;
 constexpr long max_image_coefficient = 1000;
 // The files a critical-lattice-cover names: at most one per start box of the domain split

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "checker/json_reader.hpp"
 #include "checker/limits.hpp"
 #include "checker/verifier.hpp"
 #include "crossover_reference.hpp"
@@ -160,6 +161,32 @@ TEST_CASE("nesting beyond max_json_depth or max_proof_depth is refused with the 
     CHECK(in_memory.verdict == Verdict::malformed);
     CHECK(mentions(in_memory, "max_json_depth"));
     CHECK(in_memory.path.rfind("proof.parameters.cases[0].box[0][0]", 0) == 0);
+}
+
+TEST_CASE("more than max_json_values values are refused while parsing, with the limit named") {
+    // A list of n zeros is n + 1 values: the limit itself is read, one more is refused at the
+    // value that exceeds it, before it is built.
+    auto zeros = [](std::size_t n) {
+        std::string text = "[0";
+        for (std::size_t k = 1; k < n; ++k) text += ",0";
+        return text + "]";
+    };
+    const superpack_checker::JsonReading at_limit = superpack_checker::read_json(zeros(superpack_checker::max_json_values - 1));
+    CHECK(at_limit.ok);
+    CHECK(at_limit.document.size() == superpack_checker::max_json_values - 1);
+    const superpack_checker::JsonReading beyond = superpack_checker::read_json(zeros(superpack_checker::max_json_values));
+    CHECK_FALSE(beyond.ok);
+    CHECK(beyond.message.find("max_json_values") != std::string::npos);
+    // In a certificate: a list of empty objects (the largest memory per byte of file) is refused
+    // in one line, at its path.
+    std::string text = proof("density-O0-p0.85").dump();
+    std::string padding = "\"padding\":[{}";
+    for (std::size_t k = 0; k < superpack_checker::max_json_values; ++k) padding += ",{}";
+    text.insert(1, padding + "],");
+    const auto padded = verify_text_file(text);
+    CHECK(padded.verdict == Verdict::malformed);
+    CHECK(mentions(padded, "max_json_values"));
+    CHECK(padded.path.rfind("padding[", 0) == 0);
 }
 
 TEST_CASE("a duplicate key is refused with its path (nlohmann would keep one silently)") {
