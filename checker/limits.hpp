@@ -9,12 +9,14 @@
 namespace superpack_checker {
 
 // The largest certificate file read, in bytes. A critical-lattice certificate is one long string
-// per start box, about 77 bytes per box near a closing region: a shard at p = 3 takes 22.9 MB,
-// and one box of the domain at --split 8 (the finest) still holds 2.7e5 of its 3.0e5 boxes
-// (NOTES.md 12.9). Memory follows the values of the document more than its bytes: the text, its
-// strings (at most the file again) and at most max_json_values values of about 110 bytes each,
-// so at most about 0.6 GB per file read.
-constexpr std::uintmax_t max_file_bytes = std::uintmax_t{64} << 20;
+// per start box: about 77 bytes per box near a closing region at p = 3, where one shard takes
+// 22.9 MB and one box of the domain at --split 8 (the finest) still holds 2.7e5 of its 3.0e5
+// boxes; 150 to 210 bytes per box at p = 3/5, gap 9e-5, where the boxes near D14's images, far
+// smaller than a start box, put 169 MB in one shard at --split 6 (NOTES.md 12.9). Memory follows
+// the values of the document more than its bytes: the text, its strings (at most the file again)
+// and at most max_json_values values of about 103 bytes each, so at most about 1 GB per file
+// read, and one file per thread of `verify --threads N`.
+constexpr std::uintmax_t max_file_bytes = std::uintmax_t{256} << 20;
 // The values of one document (numbers, strings, booleans, nulls, arrays and objects; a key is
 // not one), counted while parsing and refused before the next is built. Certificates in proofs/
 // have at most 35221; a critical-lattice certificate has about 30 per start box, so
@@ -66,7 +68,7 @@ constexpr std::size_t max_contact_pairs = 13;
 constexpr std::size_t max_chart_boxes = std::size_t{168} << 8;
 constexpr std::size_t max_closing_regions = 16;
 constexpr std::size_t max_chart_images = 4096;
-constexpr std::size_t max_tree_characters = std::size_t{64} << 20;
+constexpr std::size_t max_tree_characters = std::size_t{256} << 20;
 constexpr std::size_t max_tree_depth = 1024;
 constexpr long max_image_coefficient = 1000;
 // The files a critical-lattice-cover names: at most one per start box of the domain split

@@ -96,5 +96,5 @@ certify best-p0.9 best --p 0.9
 
 # critical at p = 2, gap 0, on the chart boxes of half-width 1e-5 around C1's four images (NOTES
 # 12.8): 82 boxes closed by the determinant bound or C1's closing region, each tree replayed by
-# the checker. The whole domain's trees would exceed the checker's 64 MiB file limit.
+# the checker. The whole domain's trees would exceed the checker's 256 MiB file limit.
 certify critical-p2-around-C1 critical --p 2 --around 1e-5

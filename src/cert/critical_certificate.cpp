@@ -76,7 +76,8 @@ Json critical_certificate(const CriticalResult<I>& result, const CriticalOptions
     for (const std::string& tree : result.trees) bytes += tree.size();
     if (bytes > critical_certificate_bytes - (std::size_t{1} << 20))
         throw InputError("critical --certificate: the trees take " + std::to_string(bytes) +
-                         " bytes, above the checker's file limit of 64 MiB: certify fewer boxes (more shards, at a larger --split)");
+                         " bytes, above the checker's file limit of " +
+                         std::to_string(critical_certificate_bytes >> 20) + " MiB: certify fewer boxes (more shards, at a larger --split)");
     const DoubleField field;
     Json boxes = Json::array(), regions = Json::array();
     for (const ChartBox<I>& box : result.boxes) boxes.push_back(chart_box_json(box));

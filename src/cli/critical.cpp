@@ -298,7 +298,7 @@ void add_critical(CLI::App& app) {
                         "of the best lattice's closing region");
     command->add_option("--certificate", options->certificate,
                         "FILE: write the critical-lattice certificate (every tree, replayed by the checker first; at "
-                        "most 64 MiB: --around, or a shard at --split K, whose certificates --cover joins)");
+                        "most 256 MiB: --around, or a shard at --split K, whose certificates --cover joins)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
 }

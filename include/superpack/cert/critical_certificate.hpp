@@ -12,7 +12,7 @@
 namespace superpack {
 
 // The checker's file limit, which a certificate may not exceed (checker/limits.hpp).
-constexpr std::size_t critical_certificate_bytes = std::size_t{64} << 20;
+constexpr std::size_t critical_certificate_bytes = std::size_t{256} << 20;
 
 // Throws std::runtime_error unless the result is proved and carries its trees
 // (CriticalOptions::record_trees), and InputError when the trees exceed the checker's limit.
