@@ -1,0 +1,141 @@
+#include "superpack/geometry/star_overlap.hpp"
+
+#include <queue>
+#include <string>
+
+#include "superpack/solve/bisection.hpp"
+
+namespace superpack {
+
+namespace {
+
+// g(x - c) = sum |x_i - c_i|^q over a box, by monotonicity in |x_i - c_i|.
+template <class I>
+I shifted_gauge_power(const std::vector<I>& x, const std::vector<I>& c, const I& q) {
+    I sum = pow_abs(x[0] - c[0], q);
+    for (std::size_t i = 1; i < x.size(); ++i) sum = sum + pow_abs(x[i] - c[i], q);
+    return sum;
+}
+
+// Narrows the box x to what can hold points with g(x - c) < 1 for some c in the box c:
+// |x_i - c_i|^q < 1 - sum_(j != i) |x_j - c_j|^q <= 1 - L_i, L_i a lower bound of that sum on the
+// box, so |x_i - c_i| <= r_i = (1 - L_i)^(1/q) rounded up. Returns false when no such point is
+// left (the box is discarded).
+template <class I>
+bool contract(std::vector<I>& x, const std::vector<I>& c, const I& q, const I& inverse_q) {
+    const auto field = field_of(q);
+    const I one = field.integer(1);
+    std::vector<I> power;
+    for (std::size_t i = 0; i < x.size(); ++i) power.push_back(pow_abs(x[i] - c[i], q));
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        I rest = field.integer(0);
+        for (std::size_t j = 0; j < x.size(); ++j)
+            if (j != i) rest = rest + power[j];
+        const I slack = upper_point(one - lower_point(rest));  // >= 1 - L_i
+        if (!certainly_positive(slack)) return false;            // |x_i - c_i|^q < 0: nothing
+        const I radius = upper_point(pow_nonneg(slack, inverse_q));
+        const I reach = hull(lower_point(lower_point(c[i]) - radius), upper_point(upper_point(c[i]) + radius));
+        if (!intersect(x[i], x[i], reach)) return false;
+        power[i] = pow_abs(x[i] - c[i], q);
+    }
+    return !certainly_nonnegative(shifted_gauge_power(x, c, q) - one);
+}
+
+// The larger of two lower ends (point intervals), for the bound over the boxes left.
+template <class I>
+I larger_point(const I& a, const I& b) {
+    return certainly_less(a, b) ? b : a;
+}
+
+template <class I>
+I lower_bound_of_both(const std::vector<I>& x, const std::vector<I>& origin, const std::vector<I>& v, const I& q) {
+    return larger_point(lower_point(shifted_gauge_power(x, origin, q)), lower_point(shifted_gauge_power(x, v, q)));
+}
+
+}  // namespace
+
+template <class I>
+StarOverlap<I> star_overlap(const Superball& body, const std::vector<I>& v, const StarOverlapOptions& options) {
+    if (static_cast<int>(v.size()) != body.dimension)
+        throw InputError("star overlap: a translation of " + std::to_string(v.size()) + " coordinates for a body of dimension " +
+                         std::to_string(body.dimension));
+    const auto field = field_of(v[0]);
+    const I q = field.rational(2 * body.p), inverse_q = field.rational(1 / (2 * body.p));
+    const I one = field.integer(1), half = field.rational(Rational(1, 2));
+    const std::vector<I> origin(v.size(), field.integer(0));
+    StarOverlap<I> result;
+
+    // Both bodies lie in their cubes [-1, 1]^d and v + [-1, 1]^d.
+    std::vector<I> start;
+    for (const I& vi : v) {
+        I both = vi;  // replaced by the intersection
+        if (!intersect(both, hull(-one, one), hull(lower_point(lower_point(vi) - one), upper_point(upper_point(vi) + one)))) {
+            result.disjoint = Outcome::proved;
+            return result;
+        }
+        start.push_back(both);
+    }
+    // x -> v - x maps the set {g(x) < 1, g(x - v) < 1} onto itself (K = -K), so each of its points
+    // or its image has x_k <= v_k / 2: keep that half of the widest coordinate.
+    const std::size_t k = widest_component(start);
+    if (!intersect(start[k], start[k], hull(lower_point(start[k]), upper_point(v[k] * half)))) {
+        result.disjoint = Outcome::proved;
+        return result;
+    }
+
+    // Best first: the box with the least lower bound of max(g, g(. - v)) next, as in a global
+    // minimisation of that function against the threshold 1. A depth-first order followed the
+    // boundary of one body for ever where the bodies do overlap. The order is only a heuristic:
+    // every answer comes from the certified tests.
+    struct Pending {
+        double key;
+        std::vector<I> box;
+        bool operator<(const Pending& other) const { return key > other.key; }  // least key on top
+    };
+    auto pending = [&](std::vector<I>&& box) {
+        const double key = mid_double(lower_bound_of_both(box, origin, v, q));
+        return Pending{key, std::move(box)};
+    };
+    std::priority_queue<Pending> queue;
+    queue.push(pending(std::move(start)));
+    while (!queue.empty() && result.boxes < options.max_boxes) {
+        std::vector<I> x = queue.top().box;
+        queue.pop();
+        ++result.boxes;
+        // Contract by both inequalities until a pass narrows the box by less than a tenth.
+        bool empty = false;
+        for (int pass = 0; pass < 8 && !empty; ++pass) {
+            const double before = width_upper(x[widest_component(x)]);
+            empty = !contract(x, origin, q, inverse_q) || !contract(x, v, q, inverse_q);
+            if (!empty && width_upper(x[widest_component(x)]) > 0.9 * before) break;
+        }
+        if (empty) continue;
+        const std::vector<I> center = center_of(x);
+        const I value = shifted_gauge_power(center, origin, q), translate = shifted_gauge_power(center, v, q);
+        if (certainly_less(value, one) && certainly_less(translate, one)) {
+            result.disjoint = Outcome::refuted;
+            result.witness = StarOverlapWitness<I>{center, value, translate};
+            return result;
+        }
+        auto halves = bisect_widest(x);
+        queue.push(pending(std::move(halves.first)));
+        queue.push(pending(std::move(halves.second)));
+    }
+    if (queue.empty()) {
+        result.disjoint = Outcome::proved;
+        return result;
+    }
+    result.remaining_count = static_cast<long>(queue.size());
+    // The least box first, so the listed ones are the nearest to a contact.
+    for (; !queue.empty(); queue.pop()) {
+        const I bound = lower_bound_of_both(queue.top().box, origin, v, q);
+        if (!result.remaining_bound || certainly_less(bound, *result.remaining_bound)) result.remaining_bound = bound;
+        if (static_cast<int>(result.remaining.size()) < options.max_remaining) result.remaining.push_back(queue.top().box);
+    }
+    return result;
+}
+
+template StarOverlap<DInterval> star_overlap(const Superball&, const std::vector<DInterval>&, const StarOverlapOptions&);
+template StarOverlap<Ball> star_overlap(const Superball&, const std::vector<Ball>&, const StarOverlapOptions&);
+
+}  // namespace superpack
