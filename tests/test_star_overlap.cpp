@@ -1,6 +1,6 @@
 // The overlap test of a superball and its translate for star bodies (p < 1/2): witnesses where the
-// gauge test is fooled, separation at the tips, an exact tip contact left undecided, the near
-// contacts on both sides, and each disjoint answer against a dense sample of points.
+// gauge test is fooled, separation at the tips (a contact on an axis proved), a tip-to-tip contact
+// off the axes left undecided, the near contacts on both sides, and each disjoint answer against a dense sample of points.
 #include <cmath>
 #include <random>
 
@@ -61,13 +61,16 @@ TEMPLATE_TEST_CASE("a translate with gauge above 2 that overlaps: the arms cross
 
 TEMPLATE_TEST_CASE("tips: at 2 e1 the tips touch, beyond the cubes are apart, and a small translate overlaps", "", Binary64, Arb128) {
     const TestType field;
-    // The tips (1, 0, 0) of K and of K + 2 e1 meet, and the plane x = 1 separates the interiors,
-    // but 1^(3/5) is enclosed in an interval around 1, so the boxes at the common tip stay:
-    // undecided, never an overlap.
-    StarOverlapOptions budget;
-    budget.max_boxes = 2000;
-    const auto touching = star_overlap(cross, translation({2, 0, 0}, field), budget);
-    CHECK(touching.disjoint != Outcome::refuted);
+    // The tips (1, 0, 0) of K and of K + 2 e1 meet, and the plane x = 1 separates the interiors.
+    // 1^(3/5) is enclosed in an interval around 1, so only the test |v_1| >= 2 without a power,
+    // before any box, decides it; a translate 1e-12 shorter overlaps.
+    const auto touching = star_overlap(cross, translation({2, 0, 0}, field));
+    CHECK(touching.disjoint == Outcome::proved);
+    CHECK(touching.boxes == 0);
+    const auto tilted = star_overlap(cross, translation({2, Rational(1, 1000), 0}, field));
+    CHECK(tilted.disjoint == Outcome::proved);
+    CHECK(tilted.boxes == 0);
+    CHECK(star_overlap(cross, translation({Rational(2) - Rational(1, 1000000000000), 0, 0}, field)).disjoint == Outcome::refuted);
     const auto apart = star_overlap(cross, translation({Rational(201, 100), Rational(1, 3), 0}, field));
     CHECK(apart.disjoint == Outcome::proved);
     CHECK(apart.boxes == 0);  // the cubes [-1, 1]^3 and v + [-1, 1]^3 are disjoint

@@ -40,7 +40,17 @@ void print_table(const LatticeCheck<I>& check, const std::optional<I>& phi, int 
     if (check.witness)
         std::cout << "witness      " << triple_text(check.witness->coefficients) << "  norm "
                   << enclosure_text(check.witness->norm) << "\n";
-    if (phi) std::cout << "phi          " << enclosure_text(*phi) << "\n";
+    if (check.witness_point) {
+        const auto& w = *check.witness_point;
+        std::cout << "  point      x = (" << enclosure_text(w.point[0]) << ", " << enclosure_text(w.point[1]) << ", "
+                  << enclosure_text(w.point[2]) << ")\n"
+                  << "             g(x) " << enclosure_text(w.value) << ", g(x - v) " << enclosure_text(w.value_at_translate)
+                  << "  (both < 1: x is inside K and K + v)\n";
+    }
+    // V / |det| is a packing density only where the packing is proved.
+    if (phi && check.verdict == Outcome::proved) std::cout << "phi          " << enclosure_text(*phi) << "\n";
+    if (phi && check.verdict != Outcome::proved)
+        std::cout << "V/|det|      " << enclosure_text(*phi) << "  (not a packing density: no packing proved)\n";
     if (check.reduction) {
         const Transform& u = check.reduction->transform;
         std::cout << "coefficients of contacts and witness are in the given basis; enumerated in its LLL reduction\n"
@@ -84,6 +94,8 @@ int run(const CheckLatticeOptions& options) {
             if (!options.certificate.empty() && check.verdict != Outcome::undecided)
                 write_or_fail(options.certificate, family_lattice_check_certificate(lattice, check, p, field, digits));
         } else {
+            if (!options.certificate.empty() && p < Rational(1, 2))
+                throw InputError("--certificate: the checker has no replay of the star-body test (p < 1/2) yet");
             const Basis<Rational> basis = parse_basis(options.basis);
             check = check_exact_lattice(basis, p, field);
             phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field)));
@@ -109,7 +121,7 @@ int run(const CheckLatticeOptions& options) {
 void add_check_lattice(CLI::App& app) {
     auto options = std::make_shared<CheckLatticeOptions>();
     CLI::App* command = app.add_subcommand("check-lattice", "Certify that a lattice is a superball packing (or find an overlap)");
-    command->add_option("--p", options->p, std::string("deformation parameter p >= 1/2: a decimal or a fraction (") + supported_p_text + ")")->required();
+    command->add_option("--p", options->p, std::string("deformation parameter p > 0 (below 1/2 with --basis only: the star-body overlap test): a decimal or a fraction (") + supported_p_text + ")")->required();
     command->add_option("--basis", options->basis, "exact basis rows \"a,b,c; d,e,f; g,h,i\" (decimals or fractions)");
     command->add_option("--family", options->family, "C0, C1, O0, O1, D14 or S6 (its certified enclosures)");
     command->add_option("--digits", options->digits,

@@ -43,23 +43,16 @@ std::array<I, 3> cross(const std::array<I, 3>& u, const std::array<I, 3>& v) {
 }  // namespace
 
 template <class I>
-LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactProof& proved_contact) {
-    const auto field = field_of(p);
+bool for_each_candidate(const Basis<I>& basis, LatticeCheck<I>& check, const CandidateVisitor<I>& visit) {
+    const auto field = field_of(basis[0][0]);
     const I two = field.integer(2);
-    LatticeCheck<I> check;
-    // The criterion ||u - v||_(2p) >= 2 needs a convex body: p >= 1/2 on the whole piece.
-    if (!certainly_nonnegative(field.integer(2) * p - field.integer(1)))
-        throw InputError("the packing criterion needs p >= 1/2 on the whole p interval");
-    if (!certainly_nonnegative(field.integer(1000000000000000) - p))
-        throw InputError("the lattice check supports p <= 10^15 (beyond, a norm 2 (1 + 2^-2p)^(1/(2p)) is within "
-                         "binary64's rounding of 2, and the 2p-th powers of coordinates near 2 overflow)");
     const I det = determinant(basis);
     if (contains_zero(det)) {
         check.reason = "the basis is not certainly nonsingular (determinant encloses 0)";
-        return check;
+        return false;
     }
-    // Coefficient box: a_i = (e_j x e_k) . v / det, and |(e_j x e_k) . v| <= ||e_j x e_k||_1 ||v||_inf
-    // <= ||e_j x e_k||_1 ||v||_(2p); so ||v||_(2p) <= 2 forces |a_i| <= 2 ||e_j x e_k||_1 / |det|.
+    // Coefficient box: a_i = (e_j x e_k) . v / det, and |(e_j x e_k) . v| <= ||e_j x e_k||_1 ||v||_inf,
+    // so ||v||_inf <= 2 forces |a_i| <= 2 ||e_j x e_k||_1 / |det|.
     for (int i = 0; i < 3; ++i) {
         const auto normal = cross(basis[(i + 1) % 3], basis[(i + 2) % 3]);
         const I bound = two * (abs(normal[0]) + abs(normal[1]) + abs(normal[2])) / abs(det);
@@ -67,7 +60,7 @@ LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactPr
         if (n < 0) {
             check.reason = "the coefficient box is too large to enumerate: |a_" + std::to_string(i + 1) +
                            "| may reach beyond " + std::to_string(enumeration_box_limit) + " (basis too flat or too wide)";
-            return check;
+            return false;
         }
         check.coefficient_bound[i] = n;
     }
@@ -79,13 +72,11 @@ LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactPr
                            std::to_string(check.coefficient_bound[1]) + ", |c| <= " +
                            std::to_string(check.coefficient_bound[2]) + " holds more than " +
                            std::to_string(enumeration_box_limit) + " triples, the enumeration's limit";
-            return check;
+            return false;
         }
     }
-    const I two_p = field.integer(2) * p;
-    const I inverse_two_p = field.integer(1) / two_p;
     const Coefficients& n = check.coefficient_bound;
-    std::vector<LatticeVector<I>> below;
+    std::size_t visited = 0;
     // One of v, -v: the first nonzero coefficient positive.
     for (long a = 0; a <= n[0]; ++a)
         for (long b = (a == 0 ? 0 : -n[1]); b <= n[1]; ++b)
@@ -95,39 +86,62 @@ LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactPr
                 };
                 const std::array<I, 3> v{coordinate(0), coordinate(1), coordinate(2)};
                 bool outside = false;
-                // ||v||_(2p) >= |v_j|: a coordinate certainly beyond 2 settles the candidate.
                 for (int j = 0; j < 3; ++j)
                     if (certainly_less(two, abs(v[j]))) outside = true;
                 if (outside) {
                     ++check.excluded_by_max_norm;
                     continue;
                 }
-                // ||v|| = 2 ||v/2||: the halves are at most 1 in size here, so their 2p-th powers
-                // cannot overflow (2^(2p) does beyond p = 512 in binary64). Halving is exact.
-                const std::vector<I> halves{v[0] / two, v[1] / two, v[2] / two};
-                const I norm = two * pow_nonneg(gauge_power(halves, two_p), inverse_two_p);
-                LatticeVector<I> candidate{{a, b, c}, {a, b, c}, v, norm};
-                if (check.evaluated.size() == enumeration_candidate_limit) {
+                if (visited == enumeration_candidate_limit) {
                     check.reason = "more than " + std::to_string(enumeration_candidate_limit) +
                                    " lattice vectors with every coordinate at most 2 in size, the enumeration's limit "
                                    "(the lattice is too dense: |det| is about 64 / that count)";
                     check.evaluated.clear();
                     check.contact_vectors.clear();
                     check.near_contacts.clear();
-                    return check;
+                    return false;
                 }
-                check.evaluated.push_back(candidate);
-                if (certainly_less(norm, two)) {
-                    below.push_back(candidate);
-                } else if (!certainly_less(two, norm)) {
-                    if (proved_contact(candidate.coefficients)) {
-                        check.contact_vectors.push_back({a, b, c});
-                        check.contact_vectors.push_back({-a, -b, -c});
-                    } else {
-                        check.near_contacts.push_back(candidate);
-                    }
-                }
+                ++visited;
+                visit({a, b, c}, v);
             }
+    return true;
+}
+
+template <class I>
+LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactProof& proved_contact) {
+    const auto field = field_of(p);
+    const I two = field.integer(2);
+    LatticeCheck<I> check;
+    // The criterion ||u - v||_(2p) >= 2 needs a convex body: p >= 1/2 on the whole piece.
+    if (!certainly_nonnegative(field.integer(2) * p - field.integer(1)))
+        throw InputError("the packing criterion needs p >= 1/2 on the whole p interval");
+    if (!certainly_nonnegative(field.integer(1000000000000000) - p))
+        throw InputError("the lattice check supports p <= 10^15 (beyond, a norm 2 (1 + 2^-2p)^(1/(2p)) is within "
+                         "binary64's rounding of 2, and the 2p-th powers of coordinates near 2 overflow)");
+    const I two_p = field.integer(2) * p;
+    const I inverse_two_p = field.integer(1) / two_p;
+    std::vector<LatticeVector<I>> below;
+    // ||v||_(2p) >= ||v||_inf, so the candidates (every coordinate at most 2 in size) hold every
+    // vector of norm <= 2.
+    const bool complete = for_each_candidate<I>(basis, check, [&](const Coefficients& abc, const std::array<I, 3>& v) {
+        // ||v|| = 2 ||v/2||: the halves are at most 1 in size here, so their 2p-th powers
+        // cannot overflow (2^(2p) does beyond p = 512 in binary64). Halving is exact.
+        const std::vector<I> halves{v[0] / two, v[1] / two, v[2] / two};
+        const I norm = two * pow_nonneg(gauge_power(halves, two_p), inverse_two_p);
+        LatticeVector<I> candidate{abc, abc, v, norm};
+        check.evaluated.push_back(candidate);
+        if (certainly_less(norm, two)) {
+            below.push_back(candidate);
+        } else if (!certainly_less(two, norm)) {
+            if (proved_contact(candidate.coefficients)) {
+                check.contact_vectors.push_back(abc);
+                check.contact_vectors.push_back({-abc[0], -abc[1], -abc[2]});
+            } else {
+                check.near_contacts.push_back(candidate);
+            }
+        }
+    });
+    if (!complete) return check;
     // min over all nonzero vectors: those outside the evaluated set have norm > 2.
     if (!check.evaluated.empty()) {
         mpfr_t lo, hi, best_lo, best_hi;
@@ -195,7 +209,7 @@ namespace {
 template <class Field>
 LatticeCheck<typename Field::Interval> check_exact(const Basis<Rational>& basis, const Rational& p, const Field& field) {
     using I = typename Field::Interval;
-    if (p < Rational(1, 2)) throw InputError("check-lattice needs p >= 1/2 (the superball must be convex)");
+    if (p <= 0) throw InputError("check-lattice needs p > 0");
     const BasisReduction reduction = reduce_basis(basis);
     if (!reduction.done) {
         LatticeCheck<I> check;
@@ -203,11 +217,14 @@ LatticeCheck<typename Field::Interval> check_exact(const Basis<Rational>& basis,
         return check;
     }
     const Basis<Rational>& reduced = reduction.reduced;
-    LatticeCheck<I> check = check_lattice(enclose_basis(reduced, field), field.rational(p), [&](const Coefficients& c) {
-        std::array<Rational, 3> v;
-        for (int j = 0; j < 3; ++j) v[j] = c[0] * reduced[0][j] + c[1] * reduced[1][j] + c[2] * reduced[2][j];
-        return decide_norm_is_two(v, p).answer == ExactNorm::two;
-    });
+    // Below p = 1/2 the body is a star body and each candidate goes to its overlap test.
+    LatticeCheck<I> check =
+        p < Rational(1, 2) ? check_star_lattice(enclose_basis(reduced, field), make_superball(3, p))
+                           : check_lattice(enclose_basis(reduced, field), field.rational(p), [&](const Coefficients& c) {
+                                 std::array<Rational, 3> v;
+                                 for (int j = 0; j < 3; ++j) v[j] = c[0] * reduced[0][j] + c[1] * reduced[1][j] + c[2] * reduced[2][j];
+                                 return decide_norm_is_two(v, p).answer == ExactNorm::two;
+                             });
     // One per +-pair in the given basis too: v or -v, whichever has its first coefficient positive.
     auto to_given = [&](LatticeVector<I>& x) {
         x.coefficients = given_coefficients(x.enumerated, reduction.transform);
@@ -220,7 +237,16 @@ LatticeCheck<typename Field::Interval> check_exact(const Basis<Rational>& basis,
     };
     for (auto& x : check.evaluated) to_given(x);
     for (auto& x : check.near_contacts) to_given(x);
-    if (check.witness) to_given(*check.witness);
+    if (check.witness) {
+        const LatticeVector<I> before = *check.witness;
+        to_given(*check.witness);
+        // K + v meets K at x exactly when K - v meets K at x - v: the point follows the sign.
+        if (check.witness_point && check.witness->enumerated != before.enumerated) {
+            StarOverlapWitness<I>& w = *check.witness_point;
+            for (int j = 0; j < 3; ++j) w.point[j] = w.point[j] - before.vector[j];
+            std::swap(w.value, w.value_at_translate);
+        }
+    }
     for (auto& c : check.contact_vectors) c = given_coefficients(c, reduction.transform);
     check.reduction = reduction;
     return check;
@@ -278,6 +304,13 @@ Json lattice_check_json(const LatticeCheck<I>& check, bool with_evaluated) {
     for (const auto& x : check.near_contacts) near.push_back(vector_json(x));
     result["near_contacts"] = near;
     result["witness"] = check.witness ? vector_json(*check.witness) : Json(nullptr);
+    if (check.witness_point) {
+        Json point = Json::array();
+        for (const I& value : check.witness_point->point) point.push_back(enclosure_json(value));
+        result["witness_point"] = Json{{"point", point},
+                                       {"gauge_power", enclosure_json(check.witness_point->value)},
+                                       {"gauge_power_at_translate", enclosure_json(check.witness_point->value_at_translate)}};
+    }
     result["coefficient_bound"] = coefficients_json(check.coefficient_bound);
     result["excluded_by_max_norm"] = check.excluded_by_max_norm;
     // Coefficients above are in the given basis; the box is that of the reduced basis.
@@ -290,6 +323,8 @@ Json lattice_check_json(const LatticeCheck<I>& check, bool with_evaluated) {
     return result;
 }
 
+template bool for_each_candidate(const Basis<DInterval>&, LatticeCheck<DInterval>&, const CandidateVisitor<DInterval>&);
+template bool for_each_candidate(const Basis<Ball>&, LatticeCheck<Ball>&, const CandidateVisitor<Ball>&);
 template LatticeCheck<DInterval> check_lattice(const Basis<DInterval>&, const DInterval&, const ContactProof&);
 template LatticeCheck<Ball> check_lattice(const Basis<Ball>&, const Ball&, const ContactProof&);
 template Json lattice_check_json(const LatticeCheck<DInterval>&, bool);

@@ -65,6 +65,15 @@ StarOverlap<I> star_overlap(const Superball& body, const std::vector<I>& v, cons
     const std::vector<I> origin(v.size(), field.integer(0));
     StarOverlap<I> result;
 
+    // The interiors lie in the open cubes (-1, 1)^d and v + (-1, 1)^d, disjoint when some
+    // |v_i| >= 2. Decided here without a power, whose enclosure of 1^q is wider than 1: two tips
+    // meeting on a coordinate axis, as K and K + 2 e_1 at x_1 = 1, are never separated by boxes
+    // (and a ball backend cannot even hold the box x_1 in [1, 1] without a radius).
+    for (const I& vi : v)
+        if (certainly_nonnegative(abs(vi) - field.integer(2))) {
+            result.disjoint = Outcome::proved;
+            return result;
+        }
     // Both bodies lie in their cubes [-1, 1]^d and v + [-1, 1]^d.
     std::vector<I> start;
     for (const I& vi : v) {

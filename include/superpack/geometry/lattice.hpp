@@ -14,6 +14,7 @@
 #include "superpack/arith/outcome.hpp"
 #include "superpack/geometry/lattice_basis.hpp"
 #include "superpack/geometry/lattice_reduction.hpp"
+#include "superpack/geometry/star_overlap.hpp"
 #include "superpack/geometry/superball.hpp"
 
 namespace superpack {
@@ -46,6 +47,8 @@ struct LatticeCheck {
     std::vector<Coefficients> contact_vectors;   // proved norm exactly 2; v and -v both listed
     std::vector<LatticeVector<I>> near_contacts; // norm enclosure holds 2, not proved equal (one per +-pair)
     std::optional<LatticeVector<I>> witness;     // norm certainly < 2 (when overlapping)
+    // For a star body (check_star_lattice): the point of both interiors, K and K + witness.
+    std::optional<StarOverlapWitness<I>> witness_point;
     Coefficients coefficient_bound{};            // |a| <= N[0], |b| <= N[1], |c| <= N[2]
     std::vector<LatticeVector<I>> evaluated;     // every candidate whose norm was enclosed (one per +-pair)
     long excluded_by_max_norm = 0;               // candidates with a coordinate certainly > 2 in size
@@ -55,6 +58,16 @@ struct LatticeCheck {
     std::optional<BasisReduction> reduction;
     std::size_t contacts() const { return contact_vectors.size(); }
 };
+
+// The complete enumeration (NOTES.md 5.2): visits one of v, -v for every nonzero lattice vector
+// whose coordinates may all be at most 2 in size, in a coefficient box that provably holds them
+// all (its bound goes to check.coefficient_bound, the vectors excluded inside it to
+// check.excluded_by_max_norm). Returns false, with check.reason, when the basis may be singular
+// or the box or the candidates exceed the limits above.
+template <class I>
+using CandidateVisitor = std::function<void(const Coefficients&, const std::array<I, 3>&)>;
+template <class I>
+bool for_each_candidate(const Basis<I>& basis, LatticeCheck<I>& check, const CandidateVisitor<I>& visit);
 
 // True when the triple is proved to have norm exactly 2 (by an identity of the family or an
 // exact evaluation). Called only for candidates whose norm enclosure contains 2.
@@ -70,6 +83,20 @@ using ContactProof = std::function<bool(const Coefficients&)>;
 template <class I>
 LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactProof& proved_contact);
 
+// The check for a star body (p < 1/2, NOTES.md 13.2): the lattice is a packing iff the
+// interiors of K and K + v are disjoint for every nonzero lattice vector v, and only v with every
+// coordinate below 2 in size can fail (K lies in [-1, 1]^3): the candidates of for_each_candidate,
+// each decided by star_overlap. refuted: a witness vector and a point of both interiors;
+// undecided: the candidates whose test spent its budget are the near contacts. A candidate's
+// "norm" is its gauge (a quasi-norm here: a gauge above 2 decides nothing). min_norm stays empty.
+// Throws InputError for a convex body (2p >= 1: use check_lattice).
+struct StarLatticeBudget {
+    long first_boxes = 2000;    // each candidate's overlap test first gets this many boxes
+    long total_boxes = 60000;   // the undecided ones then share what is left of this (about 1 s)
+};
+template <class I>
+LatticeCheck<I> check_star_lattice(const Basis<I>& basis, const Superball& body, const StarLatticeBudget& budget = {});
+
 // An exact basis "a,b,c; d,e,f; g,h,i" (decimals or fractions). Throws InputError when malformed
 // or singular (determinant exactly 0).
 Basis<Rational> parse_basis(const std::string& text);
@@ -83,8 +110,9 @@ Basis<typename Field::Interval> enclose_basis(const Basis<Rational>& basis, cons
     return Basis<typename Field::Interval>{{row(0), row(1), row(2)}};
 }
 
-// Check of an exact basis at an exact p >= 1/2, enumerated in its exact LLL reduction (so that a
-// skewed basis of a reasonable lattice has a small box). Contacts are decided exactly
+// Check of an exact basis at an exact p > 0, enumerated in its exact LLL reduction (so that a
+// skewed basis of a reasonable lattice has a small box); below p = 1/2 by check_star_lattice,
+// whose witness point follows the witness's sign. Contacts are decided exactly
 // (decide_norm_is_two, NOTES.md 5.3); a candidate whose enclosure holds 2 and which that test
 // does not prove to have norm 2 is a near contact. Results are reported in the given basis.
 LatticeCheck<DInterval> check_exact_lattice(const Basis<Rational>& basis, const Rational& p, const DoubleField& field);

@@ -1,0 +1,153 @@
+// check-lattice below p = 1/2 (the star-body check, NOTES.md 13.2): Minkowski's lattice and its
+// shrunk copies on both sides of the first contact, a lattice that the gauge test would pass but
+// whose translates overlap, contacts at the tips, and the command line. Every witness point is
+// re-evaluated here in binary64 from the exact basis, apart from the library's arithmetic.
+#include <cmath>
+#include <random>
+
+#include "cli_run.hpp"
+#include "superpack/geometry/lattice.hpp"
+#include "support.hpp"
+
+using namespace superpack;
+using namespace superpack::test;
+
+namespace {
+
+const Rational p_cross(3, 10);
+const std::string minkowski = "2/3,2/3,-2/3; -1/3,4/3,-1/3; 1/3,-1/3,-4/3";
+
+// The basis "text" with every entry multiplied by t.
+std::string scaled(const std::string& text, const Rational& t) {
+    const Basis<Rational> basis = parse_basis(text);
+    std::string out;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out += Rational(basis[i][j] * t).get_str() + (j < 2 ? "," : i < 2 ? "; " : "");
+    return out;
+}
+
+double g(const std::array<double, 3>& x) {
+    double sum = 0;
+    for (double xi : x) sum += std::pow(std::fabs(xi), 2 * p_cross.get_d());
+    return sum;
+}
+
+// The witness vector rebuilt from the exact basis and its coefficients, in binary64.
+std::array<double, 3> witness_vector(const std::string& text, const Coefficients& c) {
+    const Basis<Rational> basis = parse_basis(text);
+    std::array<double, 3> v{};
+    for (int j = 0; j < 3; ++j) v[j] = Rational(c[0] * basis[0][j] + c[1] * basis[1][j] + c[2] * basis[2][j]).get_d();
+    return v;
+}
+
+// A refuted check's witness point: inside K and inside K + v, by a plain binary64 evaluation
+// (its rounding error, below 1e-14, is far below the margin of the witnesses here, 2e-10 at the
+// nearest contact).
+void check_witness(const std::string& text, const LatticeCheck<DInterval>& check) {
+    REQUIRE(check.witness);
+    REQUIRE(check.witness_point);
+    const std::array<double, 3> v = witness_vector(text, check.witness->coefficients);
+    std::array<double, 3> x{}, shifted{};
+    for (int j = 0; j < 3; ++j) {
+        x[j] = mid_double(check.witness_point->point[j]);
+        shifted[j] = x[j] - v[j];
+    }
+    INFO("x = (" << x[0] << ", " << x[1] << ", " << x[2] << "), v = (" << v[0] << ", " << v[1] << ", " << v[2] << ")");
+    CHECK(g(x) < 1);
+    CHECK(g(shifted) < 1);
+    CHECK(certainly_less(check.witness_point->value, DInterval(1)));
+    CHECK(certainly_less(check.witness_point->value_at_translate, DInterval(1)));
+}
+
+// For a proved packing: no sampled point of the cube lies in K and in K + v for any candidate v.
+void check_sampled_disjoint(const LatticeCheck<DInterval>& check) {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> coordinate(-1, 1);
+    long inside = 0;
+    for (int n = 0; n < 100000; ++n) {
+        const std::array<double, 3> x{coordinate(random), coordinate(random), coordinate(random)};
+        if (g(x) >= 1) continue;
+        ++inside;
+        for (const auto& candidate : check.evaluated) {
+            std::array<double, 3> shifted{};
+            for (int j = 0; j < 3; ++j) shifted[j] = x[j] - mid_double(candidate.vector[j]);
+            CHECK(g(shifted) >= 1);
+        }
+    }
+    CHECK(inside > 1000);  // the sample reaches into K
+}
+
+LatticeCheck<DInterval> check(const std::string& text) { return check_exact_lattice(parse_basis(text), p_cross, DoubleField{}); }
+
+}  // namespace
+
+TEST_CASE("Minkowski's lattice at p = 3/10 is a packing of the cross; scaled by 1/4 it overlaps at a certified point") {
+    const auto packing = check(minkowski);
+    CHECK(packing.verdict == Outcome::proved);
+    CHECK(packing.near_contacts.empty());
+    CHECK_FALSE(packing.witness_point);
+    CHECK(packing.evaluated.size() > 13);
+    check_sampled_disjoint(packing);
+    const std::string quarter = scaled(minkowski, Rational(1, 4));
+    const auto overlapping = check(quarter);
+    CHECK(overlapping.verdict == Outcome::refuted);
+    check_witness(quarter, overlapping);
+}
+
+TEST_CASE("a lattice whose vectors all have gauge above 2 overlaps: the gauge test would pass it") {
+    // (9/10, 9/10, 0) has gauge 2.86 at p = 3/10, and K + v meets K at (0, 9/10, 0) (NOTES.md 13.1).
+    const std::string text = "9/10,9/10,0; 9/5,-9/5,0; 0,0,21/10";
+    const auto result = check(text);
+    REQUIRE_FALSE(result.evaluated.empty());
+    for (const auto& candidate : result.evaluated) CHECK(certainly_less(DInterval(2), candidate.norm));
+    CHECK(result.verdict == Outcome::refuted);
+    check_witness(text, result);
+}
+
+TEST_CASE("Minkowski's lattice shrunk towards its first contact: overlapping at t = 0.770475409, a packing at 0.77047541") {
+    // Found by bisection of check-lattice (NOTES.md 13.2); the two lattices differ by 1.3e-9.
+    const std::string below = scaled(minkowski, Rational(770475409, 1000000000));
+    const auto before = check(below);
+    CHECK(before.verdict == Outcome::refuted);
+    check_witness(below, before);
+    const auto after = check(scaled(minkowski, Rational(77047541, 100000000)));
+    CHECK(after.verdict == Outcome::proved);
+    check_sampled_disjoint(after);
+}
+
+TEST_CASE("tips: 2 Z^3 is a packing (the tips touch on the axes); tip-to-tip off the axes is a near contact") {
+    CHECK(check("2,0,0; 0,2,0; 0,0,2").verdict == Outcome::proved);
+    // (1, 1, 0): the tip (1, 0, 0) of K is the tip of K + v's arm along -y (NOTES.md 13.1): the
+    // interiors are disjoint, but no box at the common tip can be discarded.
+    const auto touching = check("1,1,0; 1,-1,0; 0,0,2");
+    CHECK(touching.verdict == Outcome::undecided);
+    CHECK(touching.near_contacts.size() == 2);
+    CHECK_FALSE(touching.witness);
+    CHECK(check("99/100,99/100,0; 99/100,-99/100,0; 0,0,2").verdict == Outcome::refuted);
+    CHECK(check("101/100,101/100,0; 101/100,-101/100,0; 0,0,2").verdict == Outcome::proved);
+}
+
+TEST_CASE("check-lattice --p 0.3: JSON with the witness point, Arb agrees, the certificate is refused") {
+    const Run packing = run("check-lattice --p 0.3 --basis '" + minkowski + "' --json");
+    CHECK(packing.status == 0);
+    const auto document = nlohmann::json::parse(packing.out);
+    CHECK(document["verdict"] == "admissible");
+    CHECK_FALSE(document.contains("witness_point"));
+    const Run arb = run("check-lattice --p 0.3 --digits 40 --basis '" + minkowski + "' --json");
+    CHECK(arb.status == 0);
+    CHECK(nlohmann::json::parse(arb.out)["verdict"] == "admissible");
+    const Run overlapping = run("check-lattice --p 3/10 --basis '" + scaled(minkowski, Rational(1, 4)) + "' --json");
+    CHECK(overlapping.status == 0);
+    const auto refuted = nlohmann::json::parse(overlapping.out);
+    CHECK(refuted["verdict"] == "overlapping");
+    CHECK(refuted["witness_point"]["point"].size() == 3);
+    CHECK(refuted["witness_point"].contains("gauge_power_at_translate"));
+    const Run table = run("check-lattice --p 0.3 --basis '" + scaled(minkowski, Rational(1, 4)) + "'");
+    CHECK(table.out.find("both < 1") != std::string::npos);
+    CHECK(table.out.find("not a packing density") != std::string::npos);  // V/|det| of an overlap
+    CHECK(table.out.find("phi ") == std::string::npos);
+    const Run certificate = run("check-lattice --p 0.3 --basis '" + minkowski + "' --certificate /tmp/never.json --json");
+    CHECK(certificate.status == 2);
+    CHECK(nlohmann::json::parse(certificate.out)["error"].get<std::string>().find("star-body") != std::string::npos);
+    CHECK(run("check-lattice --p 0 --basis '" + minkowski + "'").status == 2);
+}
