@@ -99,6 +99,11 @@ def main():
         decimal = f"{(500 + 10 * k) / 1000:g}"
         if decimal in targets:
             families.append(entry("O1", decimal, parameters, phi))
+    # The insertion (JST 2009, Eq. 10): the exact basis of Minkowski's octahedron lattice,
+    # |det| = 38/27, for every 0 < p <= 1/2.
+    for p_text in ["0.05", "0.1", "0.3", "0.45", "0.5"]:
+        p = mpf(Fraction(p_text).numerator) / Fraction(p_text).denominator
+        families.append(entry("minkowski-insertion", p_text, {}, volume(p) * 27 / 38))
     areas = [{"p": p_text, "area": text(area(mpf(Fraction(p_text).numerator) / Fraction(p_text).denominator))}
              for p_text in ["0.3", "0.5", "0.75", "1", "1.5", "2", "7/3"]]
     document = {"generator": "scripts/make_golden.py", "mpmath_dps": mp.dps, "digits": DIGITS,

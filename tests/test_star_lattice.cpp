@@ -7,6 +7,7 @@
 
 #include "cli_run.hpp"
 #include "superpack/geometry/lattice.hpp"
+#include "superpack/problems/family_lattice_check.hpp"
 #include "support.hpp"
 
 using namespace superpack;
@@ -150,4 +151,23 @@ TEST_CASE("check-lattice --p 0.3: JSON with the witness point, Arb agrees, the c
     CHECK(certificate.status == 2);
     CHECK(nlohmann::json::parse(certificate.out)["error"].get<std::string>().find("star-body") != std::string::npos);
     CHECK(run("check-lattice --p 0 --basis '" + minkowski + "'").status == 2);
+}
+
+TEST_CASE("family minkowski-insertion: phi = V(p) 27/38 (mpmath), a packing below 1/2 by the star test, 14 contacts at 1/2") {
+    const Binary64 field;
+    const auto at = [&](const Rational& p) { return enclose_family(Family::MinkowskiInsertion, p, field); };
+    const auto lattice = at(Rational(3, 10));
+    CHECK(check_family_lattice(lattice, Rational(3, 10)).verdict == Outcome::proved);
+    CHECK(check_family_lattice(at(Rational(9, 20)), Rational(9, 20)).verdict == Outcome::proved);
+    const auto octahedra = check_family_lattice(at(Rational(1, 2)), Rational(1, 2));
+    CHECK(octahedra.verdict == Outcome::proved);
+    CHECK(octahedra.contact_vectors.size() == 14);
+    CHECK_THROWS_AS(at(Rational(3, 5)), InputError);
+    CHECK_THROWS_AS(at(Rational(0)), InputError);
+    const Run density = run("density --family minkowski-insertion --p 0.3 --json");
+    CHECK(density.status == 0);
+    CHECK(nlohmann::json::parse(density.out)["packing"]["verdict"] == "admissible");
+    const Run refused = run("density --family minkowski-insertion --p 0.3 --certificate /tmp/never.json");
+    CHECK(refused.status == 2);
+    CHECK(run("audit --family minkowski-insertion").status == 2);
 }

@@ -82,8 +82,17 @@ Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p) {
         case Family::O1: return o1_proof(lattice, p);
         case Family::D14: return d14_proof(lattice, p);
         case Family::S6: return s6_proof(lattice);
+        case Family::MinkowskiInsertion: break;  // refused by require_certificate_kind
     }
     throw std::logic_error("unknown family");
+}
+
+void require_certificate_kind(const Rational& p, std::optional<Family> family) {
+    if (family) require_in_domain(*family, p);  // the first problem named is the domain's
+    if (family == Family::MinkowskiInsertion)
+        throw InputError("--certificate: no certificate kind for minkowski-insertion yet (its check below p = 1/2 is the "
+                         "star-body test, which the checker does not replay yet)");
+    if (p < Rational(1, 2)) throw InputError("--certificate: the checker has no replay of the star-body test (p < 1/2) yet");
 }
 
 Json family_definition_json(Family family) {

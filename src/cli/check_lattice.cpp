@@ -6,6 +6,7 @@
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/audit_certificate.hpp"
+#include "superpack/cert/family_certificate.hpp"
 #include "superpack/cert/lattice_certificate.hpp"
 #include "superpack/problems/family_lattice_check.hpp"
 
@@ -75,6 +76,7 @@ int run(const CheckLatticeOptions& options) {
     const Rational p = parse_p(options.p);
     if (options.basis.size() > 1000) throw InputError("--basis: at most 1000 characters, got " + std::to_string(options.basis.size()));
     if (!options.certificate.empty()) {
+        require_certificate_kind(p, options.family.empty() ? std::nullopt : std::optional<Family>(parse_family(options.family)));
         require_writable_target(options.certificate);
         require_rounding_self_test();
     }
@@ -88,14 +90,12 @@ int run(const CheckLatticeOptions& options) {
         if (!options.family.empty()) {
             const Family family = parse_family(options.family);
             const auto lattice = enclose_family(family, p, field);
-            check = check_family_lattice(lattice, field.rational(p));
+            check = check_family_lattice(lattice, p);
             phi = lattice.phi;
             document["family"] = to_string(family);
             if (!options.certificate.empty() && check.verdict != Outcome::undecided)
                 write_or_fail(options.certificate, family_lattice_check_certificate(lattice, check, p, field, digits));
         } else {
-            if (!options.certificate.empty() && p < Rational(1, 2))
-                throw InputError("--certificate: the checker has no replay of the star-body test (p < 1/2) yet");
             const Basis<Rational> basis = parse_basis(options.basis);
             check = check_exact_lattice(basis, p, field);
             phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field)));
@@ -123,7 +123,7 @@ void add_check_lattice(CLI::App& app) {
     CLI::App* command = app.add_subcommand("check-lattice", "Certify that a lattice is a superball packing (or find an overlap)");
     command->add_option("--p", options->p, std::string("deformation parameter p > 0 (below 1/2 with --basis only: the star-body overlap test): a decimal or a fraction (") + supported_p_text + ")")->required();
     command->add_option("--basis", options->basis, "exact basis rows \"a,b,c; d,e,f; g,h,i\" (decimals or fractions)");
-    command->add_option("--family", options->family, "C0, C1, O0, O1, D14 or S6 (its certified enclosures)");
+    command->add_option("--family", options->family, "C0, C1, O0, O1, D14, S6 or minkowski-insertion (its certified enclosures)");
     command->add_option("--digits", options->digits,
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
     command->add_flag("--json", options->json, "print one JSON document on stdout");

@@ -74,6 +74,7 @@ int run(const DensityOptions& options) {
     const Rational p = parse_p(options.p);
     require_in_domain(family, p);
     if (!options.certificate.empty()) {
+        require_certificate_kind(p, family);
         require_writable_target(options.certificate);
         require_rounding_self_test();
     }
@@ -81,7 +82,7 @@ int run(const DensityOptions& options) {
         using I = typename std::decay_t<decltype(field)>::Interval;
         const auto lattice = enclose_family(family, p, field);
         std::optional<LatticeCheck<I>> check;
-        if (lattice.status == Outcome::proved) check = check_family_lattice(lattice, field.rational(p));
+        if (lattice.status == Outcome::proved) check = check_family_lattice(lattice, p);
         if (!options.certificate.empty() && lattice.status == Outcome::proved) {
             const Json certificate = family_certificate(lattice, p, field, digits);
             try {
@@ -118,7 +119,7 @@ int run(const DensityOptions& options) {
 void add_density(CLI::App& app) {
     auto options = std::make_shared<DensityOptions>();
     CLI::App* command = app.add_subcommand("density", "Certified density of one lattice family at one p");
-    command->add_option("--family", options->family, "C0, C1 (p >= 1), O0 (1/2 < p <= 1), O1 (p >= 1/2), D14 (1/2 <= p <= 1) or S6 (ln3/ln4 < p < 1)")->required();
+    command->add_option("--family", options->family, "C0, C1 (p >= 1), O0 (1/2 < p <= 1), O1 (p >= 1/2), D14 (1/2 <= p <= 1), S6 (ln3/ln4 < p < 1) or minkowski-insertion (0 < p <= 1/2)")->required();
     command->add_option("--p", options->p, std::string("deformation parameter: a decimal (1.15) or a fraction (23/20); ") + supported_p_text)->required();
     command->add_option("--digits", options->digits,
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");

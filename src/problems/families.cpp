@@ -17,6 +17,7 @@ const char* to_string(Family family) {
         case Family::O1: return "O1";
         case Family::D14: return "D14";
         case Family::S6: return "S6";
+        case Family::MinkowskiInsertion: return "minkowski-insertion";
     }
     return "?";
 }
@@ -36,6 +37,9 @@ std::string family_source(Family family) {
         case Family::S6:
             return "superpack's own family (issue 12): the KKT point of min |det| for Minkowski's six pairs (configuration "
                    "A3), NOTES.md 4.2";
+        case Family::MinkowskiInsertion:
+            return jst + "Sec. IV.C, Eq. 10: the concave superball inside each octahedron of Minkowski's densest lattice "
+                         "packing of octahedra";
     }
     return "";
 }
@@ -43,7 +47,14 @@ std::string family_source(Family family) {
 Family parse_family(const std::string& name) {
     for (Family family : all_families())
         if (name == to_string(family)) return family;
-    throw InputError("unknown family '" + name + "' (expected C0, C1, O0, O1, D14 or S6)");
+    if (name == to_string(Family::MinkowskiInsertion)) return Family::MinkowskiInsertion;
+    throw InputError("unknown family '" + name + "' (expected C0, C1, O0, O1, D14, S6 or minkowski-insertion)");
+}
+
+Basis<Rational> minkowski_octahedron_basis() {
+    return Basis<Rational>{{{Rational(2, 3), Rational(2, 3), Rational(-2, 3)},
+                            {Rational(-1, 3), Rational(4, 3), Rational(-1, 3)},
+                            {Rational(1, 3), Rational(-1, 3), Rational(-4, 3)}}};
 }
 
 std::string family_domain_text(Family family) {
@@ -54,6 +65,7 @@ std::string family_domain_text(Family family) {
         case Family::O1: return "p >= 1/2";
         case Family::D14: return "1/2 <= p <= 1";
         case Family::S6: return "ln3/ln4 < p < 1";
+        case Family::MinkowskiInsertion: return "0 < p <= 1/2";
     }
     return "";
 }
@@ -103,6 +115,7 @@ void require_in_domain(Family family, const Rational& p) {
         case Family::O1: inside = p >= half; break;
         case Family::D14: inside = p >= half && p <= 1; break;
         case Family::S6: inside = p < 1 && above_octahedral_crossover(p); break;
+        case Family::MinkowskiInsertion: inside = p > 0 && p <= half; break;
     }
     if (!inside)
         throw InputError(std::string("p = ") + decimal_or_fraction_text(p) + " is outside the domain of " +
@@ -359,6 +372,11 @@ FamilyLattice<I> enclose_family_at(Family family, const I& p) {
         case Family::O1: return enclose_o1(p);
         case Family::D14: return enclose_d14(p);
         case Family::S6: return enclose_s6(p);
+        case Family::MinkowskiInsertion: {
+            FamilyLattice<I> lattice{family};  // no parameters: the basis does not depend on p
+            finish(lattice, p, enclose_basis(minkowski_octahedron_basis(), field_of(p)));
+            return lattice;
+        }
     }
     return FamilyLattice<I>{family};
 }

@@ -5,6 +5,8 @@
 // the lattice check (packing, overlapping or undecided) that decides whether phi is a
 // packing density.
 #pragma once
+#include <optional>
+
 #include "superpack/cert/certificate.hpp"
 #include "superpack/problems/family_lattice_check.hpp"
 
@@ -16,6 +18,11 @@ namespace superpack {
 // Throws std::runtime_error unless lattice.status is certified.
 template <class I>
 Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p);
+
+// Throws InputError for a family or p without a certificate kind the checker replays: below
+// p = 1/2 (the star-body test) and the insertion (at every p), so that a command refuses
+// --certificate before computing.
+void require_certificate_kind(const Rational& p, std::optional<Family> family);
 
 // What a claim states of the family's definition beside its name: for S6 {"contact_pairs": the
 // six triples}, which the checker compares with its own; an empty object for the others, whose

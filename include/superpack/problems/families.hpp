@@ -1,6 +1,7 @@
 // The four lattice families of Jiao, Stillinger & Torquato (2009), the 14-neighbour family
-// D14 of Dostert & Vallentin (2020) and superpack's six-pair family S6 (problems/s6.hpp): their
-// contact equations, certified parameters, bases and densities phi = V_sb(p) / |det basis|.
+// D14 of Dostert & Vallentin (2020), superpack's six-pair family S6 (problems/s6.hpp) and the
+// paper's Minkowski insertion for concave superballs: their contact equations, certified
+// parameters, bases and densities phi = V_sb(p) / |det basis|.
 //
 // Every equation is a template over the scalar of its unknowns (S) and of p (P), each an
 // interval or a Jet, so Newton/Krawczyk (d/d unknowns) and the crossover and slope
@@ -18,11 +19,19 @@
 
 namespace superpack {
 
-enum class Family { C0, C1, O0, O1, D14, S6 };
+enum class Family { C0, C1, O0, O1, D14, S6, MinkowskiInsertion };
 
 const char* to_string(Family family);
 Family parse_family(const std::string& name);  // throws InputError
+// The convex families (p >= 1/2), which the report, `best` and `audit` run through; the insertion
+// (0 < p <= 1/2) only by its name.
 std::vector<Family> all_families();
+
+// The insertion (JST 2009, Sec. IV.C, Eq. 10): for 0 < p <= 1/2 the superball lies in the
+// octahedron |x| + |y| + |z| <= 1 (sum |x_i|^(2p) <= 1 makes each |x_i| <= 1, so |x_i| <= |x_i|^(2p)),
+// so the lattice of Minkowski's densest octahedron packing, exact and the same for every p, packs
+// it: rows (2/3, 2/3, -2/3), (-1/3, 4/3, -1/3), (1/3, -1/3, -4/3), |det| = 38/27.
+Basis<Rational> minkowski_octahedron_basis();
 // Where the family is defined, for the tables and JSON: the paper and its equations.
 std::string family_source(Family family);
 // Claimed domain in words and as a predicate on exact p (throws InputError outside it).

@@ -19,5 +19,9 @@ int claimed_contacts(Family family);
 // the report calls. Undecided with the family's message when the lattice is not certified.
 template <class I>
 LatticeCheck<I> check_family_lattice(const FamilyLattice<I>& lattice, const I& p);
+// The same at one exact p: the commands' entry, which also checks the insertion (its exact basis,
+// by the star-body test below p = 1/2).
+template <class I>
+LatticeCheck<I> check_family_lattice(const FamilyLattice<I>& lattice, const Rational& p);
 
 }  // namespace superpack
