@@ -6,6 +6,7 @@
 #include <optional>
 #include <random>
 
+#include "superpack/problems/difference_gauge.hpp"
 #include "superpack/solve/approximate_inverse.hpp"
 
 namespace superpack {
@@ -39,6 +40,80 @@ Vector combine(const Triple& c, const DoubleBasis& b) {
 
 double dot(const Vector& a, const Vector& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+double max_norm(const Vector& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
+
+// The most coefficient pairs for_each_in_cube walks: a basis that needs more is so skewed that
+// the search treats it as no packing.
+constexpr double max_cube_pairs = 1e5;
+
+// Calls visit(c, c B) for one c per +-pair of every nonzero lattice vector with max |v_i| < bound
+// (and perhaps a few more), in floating point: |c_k| <= bound * sum_j |(B^-1)_jk| bounds two
+// coefficients, and each coordinate's bound |v_j| < bound gives the third an interval. False,
+// with nothing visited, when that takes more than max_cube_pairs pairs or B is singular.
+// The coefficient bounds of for_each_in_cube, the one to solve for (the widest) last; nothing
+// when they take more than max_cube_pairs pairs or B is singular.
+struct CubeLimits {
+    std::array<long, 3> limit;
+    int first, second, last;
+};
+std::optional<CubeLimits> cube_limits(const DoubleBasis& b, double bound) {
+    const double det = determinant(b);
+    if (!(std::fabs(det) > 0) || !(bound < HUGE_VAL)) return std::nullopt;
+    CubeLimits cube{};
+    for (int k = 0; k < 3; ++k) {
+        // Column k of B^-1 is the cross product of the other two rows over det.
+        const Vector& u = b[(k + 1) % 3];
+        const Vector& w = b[(k + 2) % 3];
+        const Vector cross{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+        const double reach = bound * (std::fabs(cross[0]) + std::fabs(cross[1]) + std::fabs(cross[2])) / std::fabs(det);
+        if (!(reach < 1e6)) return std::nullopt;
+        cube.limit[k] = static_cast<long>(std::floor(reach * (1 + 1e-9)));
+    }
+    cube.last = 0;
+    for (int k = 1; k < 3; ++k)
+        if (cube.limit[k] > cube.limit[cube.last]) cube.last = k;
+    cube.first = (cube.last + 1) % 3;
+    cube.second = (cube.last + 2) % 3;
+    if ((2.0 * cube.limit[cube.first] + 1) * (2.0 * cube.limit[cube.second] + 1) > max_cube_pairs) return std::nullopt;
+    return cube;
+}
+
+template <class Visit>
+bool for_each_in_cube(const DoubleBasis& b, double bound, Visit&& visit) {
+    const std::optional<CubeLimits> cube = cube_limits(b, bound);
+    if (!cube) return false;
+    const std::array<long, 3>& limit = cube->limit;
+    const int first = cube->first, second = cube->second, last = cube->last;
+    const double reach = bound * (1 + 1e-9);
+    for (long a = -limit[first]; a <= limit[first]; ++a)
+        for (long c = -limit[second]; c <= limit[second]; ++c) {
+            Vector partial{};
+            for (int j = 0; j < 3; ++j) partial[j] = a * b[first][j] + c * b[second][j];
+            double low = -HUGE_VAL, high = HUGE_VAL;
+            for (int j = 0; j < 3; ++j) {
+                const double step = b[last][j];
+                if (step == 0) {
+                    if (!(std::fabs(partial[j]) < reach)) low = HUGE_VAL;
+                    continue;
+                }
+                const double x = (-reach - partial[j]) / step, y = (reach - partial[j]) / step;
+                low = std::max(low, std::min(x, y));
+                high = std::min(high, std::max(x, y));
+            }
+            if (!(low <= high)) continue;
+            for (long t = static_cast<long>(std::ceil(low)); t <= static_cast<long>(std::floor(high)); ++t) {
+                Triple triple{};
+                triple[first] = a;
+                triple[second] = c;
+                triple[last] = t;
+                const int lead = triple[0] != 0 ? 0 : triple[1] != 0 ? 1 : 2;
+                if (triple[lead] <= 0) continue;  // zero, or the other of its +-pair
+                visit(triple, combine(triple, b));
+            }
+        }
+    return true;
+}
+
 // Size reduction in the Euclidean inner product, rows sorted by length, det > 0: a basis in
 // which the short triples above find the shortest vectors.
 void reduce(DoubleBasis& b) {
@@ -67,18 +142,34 @@ DoubleBasis scaled(DoubleBasis b, double factor) {
 }
 
 // log|det B| - 3 log(lambda / 2): minus the log of the density, up to log V.
-double objective(const DoubleBasis& b, double p) {
+// The shortest packing norm over the short triples and `extra` (the search's cuts below 1/2).
+double shortest_over(const DoubleBasis& b, double p, const std::vector<Triple>& extra) {
+    double shortest = HUGE_VAL;
+    for (const std::vector<Triple>* triples : {&short_triples(), &extra})
+        for (const Triple& c : *triples) {
+            const Vector v = combine(c, b);
+            // 2 ||v||_D is at least max |v_i|: no need to evaluate a vector that cannot be shorter.
+            if (max_norm(v) < shortest) shortest = std::min(shortest, packing_norm(v, p));
+        }
+    return shortest;
+}
+
+double objective(const DoubleBasis& b, double p, const std::vector<Triple>& extra = {}) {
     const double d = std::fabs(determinant(b));
-    const double shortest = shortest_norm(b, p);
+    const double shortest = shortest_over(b, p, extra);
     if (!(d > 0) || !(shortest > 0)) return HUGE_VAL;
+    // Below 1/2 the short triples and cuts see only part of the lattice: a step to a lattice too
+    // skewed for the cuts' enumeration would leave it unseen, so it is refused.
+    if (p < 0.5 && !cube_limits(b, shortest)) return HUGE_VAL;
     return std::log(d) - 3 * std::log(shortest / 2);
 }
 
 // Compass search over the nine entries, with the coordinate directions and fresh random ones
 // each round (F is a minimum of smooth functions: at a kink only a few directions descend).
-DoubleBasis pattern_search(DoubleBasis b, double p, std::mt19937_64& random, long& evaluations) {
+DoubleBasis pattern_search(DoubleBasis b, double p, std::mt19937_64& random, long& evaluations,
+                           const std::vector<Triple>& extra) {
     std::normal_distribution<double> normal;
-    double value = objective(b, p);
+    double value = objective(b, p, extra);
     ++evaluations;
     const long budget = evaluations + 30000;
     for (double step = 0.05; step > 1e-12 && evaluations < budget;) {
@@ -104,7 +195,7 @@ DoubleBasis pattern_search(DoubleBasis b, double p, std::mt19937_64& random, lon
             DoubleBasis trial = b;
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 3; ++j) trial[i][j] += step * d[i][j];
-            const double trial_value = objective(trial, p);
+            const double trial_value = objective(trial, p, extra);
             ++evaluations;
             if (trial_value < value - 1e-15) {
                 b = trial;
@@ -238,14 +329,21 @@ namespace {
 std::vector<Triple> near_shortest(const DoubleBasis& b, double p, double tolerance) {
     const double shortest = shortest_norm(b, p);
     std::vector<Triple> near;
-    for (const Triple& c : short_triples())
-        if (norm_2p(combine(c, b), p) <= shortest * (1 + tolerance)) near.push_back(c);
+    auto visit = [&](const Triple& c, const Vector& v) {
+        if (packing_norm(v, p) <= shortest * (1 + tolerance)) near.push_back(c);
+    };
+    if (p >= 0.5) {
+        for (const Triple& c : short_triples()) visit(c, combine(c, b));
+    } else {
+        for_each_in_cube(b, shortest * (1 + tolerance), visit);
+    }
     return near;
 }
 
 DoubleBasis normalised(DoubleBasis b, double p) {
     reduce(b);
-    return scaled(b, 2 / shortest_norm(b, p));
+    const double shortest = shortest_norm(b, p);
+    return shortest > 0 ? scaled(b, 2 / shortest) : b;  // 0: too skewed to enumerate, left for the check to reject
 }
 
 }  // namespace
@@ -258,9 +356,19 @@ double norm_2p(const std::array<double, 3>& v, double p) {
     return largest * std::pow(sum, 1 / (2 * p));
 }
 
+double packing_norm(const std::array<double, 3>& v, double p) {
+    return p >= 0.5 ? norm_2p(v, p) : 2 * difference_gauge(v, p);
+}
+
 double shortest_norm(const DoubleBasis& basis, double p) {
-    double shortest = HUGE_VAL;
-    for (const Triple& c : short_triples()) shortest = std::min(shortest, norm_2p(combine(c, basis), p));
+    double shortest = shortest_over(basis, p, {});
+    // Below 1/2 the packing norm is far from Euclidean (a thin cross's arm reaches through many
+    // lattice cells), so the short triples of a reduced basis may miss the shortest vector: every
+    // vector that could be shorter, max |v_i| below the shortest so far, is visited.
+    auto visit = [&](const Triple&, const Vector& v) {
+        if (max_norm(v) < shortest) shortest = std::min(shortest, packing_norm(v, p));
+    };
+    if (p < 0.5 && !for_each_in_cube(basis, shortest, visit)) return 0;
     return shortest;
 }
 
@@ -290,11 +398,32 @@ SearchResult search_dense_lattices(double p, double volume, const std::vector<Se
     const auto begin = std::chrono::steady_clock::now();
     for (const SearchStart& start : all) {
         DoubleBasis b = normalised(start.basis, p);
-        b = normalised(pattern_search(b, p, random, result.evaluations), p);
+        // Below 1/2 the objective over the short triples alone may miss the shortest vector, and
+        // the whole enumeration costs hundreds of vectors an evaluation: the vectors the search
+        // has missed join its objective as cuts, and it runs again, until none is missed.
+        // A search that runs into a lattice too skewed to enumerate has lost track of its
+        // shortest vector: it gives no candidate.
+        std::vector<Triple> cuts;
+        bool enumerable = true;
+        for (int round = 0; round < 10 && enumerable; ++round) {
+            b = pattern_search(b, p, random, result.evaluations, cuts);
+            if (p >= 0.5) break;
+            const double shortest = shortest_over(b, p, cuts);
+            const std::size_t before = cuts.size();
+            enumerable = for_each_in_cube(b, shortest, [&](const Triple& c, const Vector& v) {
+                if (packing_norm(v, p) < shortest * (1 - 1e-12)) cuts.push_back(c);
+            });
+            if (cuts.size() == before) break;
+        }
+        b = normalised(b, p);
+        if (!enumerable || !(shortest_norm(b, p) > 0)) continue;
         SearchCandidate candidate{start.name, b, 0, {}};
         // The pattern search stops near, not at, a kink: the active set is guessed at growing
-        // tolerances, and the first that Newton's method turns into a KKT point is kept.
+        // tolerances, and the first that Newton's method turns into a KKT point is kept. Below
+        // p = 1/2 the constraints are the difference body's gauge, which the KKT system does not
+        // model: the pattern search's end point is the candidate.
         for (double tolerance : {1e-7, 1e-5, 1e-4, 1e-3, 1e-2}) {
+            if (p < 0.5) break;
             const std::optional<KktPoint> point = kkt_point(b, p, near_shortest(b, p, tolerance));
             if (point) {
                 candidate.basis = normalised(point->basis, p);

@@ -3,11 +3,12 @@
 // how good the guess was (NOTES.md, "Densest lattice search").
 //
 // A lattice with basis rows B packs translates of the superball K iff every nonzero lattice
-// vector has 2p-norm >= 2; scaled so that its shortest vector has norm 2 it has density
-// V(p) / |det B|. The search minimises the scale-free F(B) = log|det B| - 3 log(lambda(B) / 2),
-// lambda the shortest norm, from given and random starts, by a pattern search, then polishes
-// each end point by Newton's method on the KKT system of min |det B| subject to
-// ||c B||_(2p) = 2 for the near-shortest coefficient vectors c.
+// vector has packing norm >= 2 (the 2p-norm for p >= 1/2, twice the gauge of K - K below);
+// scaled so that its shortest vector has norm 2 it has density V(p) / |det B|. The search
+// minimises the scale-free F(B) = log|det B| - 3 log(lambda(B) / 2), lambda the shortest packing
+// norm, from given and random starts, by a pattern search, then (p >= 1/2) polishes each end point
+// by Newton's method on the KKT system of min |det B| subject to ||c B||_(2p) = 2 for the
+// near-shortest coefficient vectors c.
 #pragma once
 #include <array>
 #include <optional>
@@ -41,12 +42,12 @@ struct SearchCandidate {
 };
 
 struct SearchResult {
-    std::vector<SearchCandidate> candidates;  // one per start, densest first
+    std::vector<SearchCandidate> candidates;  // one per start (below 1/2: but those that end too skewed to enumerate), densest first
     long evaluations = 0;                     // of F
     double seconds = 0;                       // wall time of the search
 };
 
-// p >= 1/2 as a double, volume V(p) as a double (only for the reported float density).
+// p > 0 as a double, volume V(p) as a double (only for the reported float density).
 SearchResult search_dense_lattices(double p, double volume, const std::vector<SearchStart>& starts,
                                    const SearchOptions& options);
 
@@ -61,8 +62,13 @@ std::optional<KktPoint> kkt_point(const DoubleBasis& b, double p, const std::vec
 // The same from a basis and multipliers (one per triple), e.g. the point at a nearby p.
 std::optional<KktPoint> kkt_point(const KktPoint& start, double p, const std::vector<std::array<long, 3>>& active);
 
-// The shortest 2p-norm over the lattice vectors c B with |c_i| <= 2, and the norm of one vector.
+// The shortest packing norm, and the norm of one vector: the packing norm is the 2p-norm for
+// p >= 1/2 and twice the gauge of K - K below (problems/difference_gauge.hpp), so that a lattice
+// packs K iff all its vectors have it >= 2. For p >= 1/2 over the vectors c B with |c_i| <= 2 (B
+// reduced); below, over every vector with max |v_i| under the shortest of those, or 0 when that
+// enumeration would take over 10^5 coefficient pairs (a basis the search then discards).
 double shortest_norm(const DoubleBasis& basis, double p);
+double packing_norm(const std::array<double, 3>& v, double p);
 double norm_2p(const std::array<double, 3>& v, double p);
 
 }  // namespace superpack
