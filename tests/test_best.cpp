@@ -103,10 +103,43 @@ TEST_CASE("best at p = 0.6: D14, and the search finds the same seven-pair lattic
     CHECK(std::fabs(mid_double(best_phi(best)) - *reference) < 1e-13);
 }
 
-TEST_CASE("best refuses p below 1/2 and beyond 10^6") {
+TEST_CASE("best refuses p below 1/10 and beyond 10^6") {
     const DoubleField field;
-    CHECK_THROWS_AS(find_best_lattice(Rational(2, 5), field, BestOptions{}), InputError);
+    CHECK_THROWS_AS(find_best_lattice(Rational(9, 100), field, BestOptions{}), InputError);
     CHECK_THROWS_AS(find_best_lattice(Rational(2000000), field, BestOptions{}), InputError);
+}
+
+TEST_CASE("best below 1/2: a certified lattice denser than Minkowski's insertion and than its shrink") {
+    const DoubleField field;
+    BestOptions options;
+    options.search.random_starts = 0;
+    // t* = 1 / min ||v||_D over Minkowski's lattice at p = 3/10: the star test's bisection gave
+    // 0.770475409 < t* < 0.77047541 (NOTES.md 13.2), the difference gauge must agree.
+    const DoubleBasis minkowski{{{2.0 / 3, 2.0 / 3, -2.0 / 3}, {-1.0 / 3, 4.0 / 3, -1.0 / 3}, {1.0 / 3, -1.0 / 3, -4.0 / 3}}};
+    const double t = 2 / shortest_norm(minkowski, 0.3);
+    CHECK(t > 0.770475409);
+    CHECK(t < 0.77047541);
+    const BestLattice<DInterval> best = find_best_lattice(Rational(3, 10), field, options);
+    REQUIRE(best.status == Outcome::proved);
+    REQUIRE(best.source == BestSource::search);
+    CHECK(best.checked[best.index].check.verdict == Outcome::proved);
+    // The shrunk insertion has phi 0.3527 (NOTES.md 13.2); the search must beat it.
+    CHECK(certainly_less(DInterval(0.3528), best_phi(best)));
+}
+
+TEST_CASE("the search's shortest packing norm below 1/2 reaches beyond the short triples") {
+    // An end point of the search at p = 1/10 when it looked at the triples |c_i| <= 2 only: it
+    // read shortest norm 2 there, but check-lattice refutes the lattice with the witness vector
+    // 2 b1 - 3 b2 - 4 b3 = (0.657, 0.002, 0.011), an arm of one cross through the next.
+    const DoubleBasis fooled{{{0.056611997124090568, -0.020090277469923642, -0.13080872788992604},
+                              {-0.080606797382121939, -0.10986963751715056, 0.046990469258912856},
+                              {-0.075466224583075045, 0.071825985794940747, -0.10331143430777595}}};
+    const std::array<double, 3> witness{0.65690928472684718, 0.0021244144318414426, 0.010656873674513123};
+    const double shortest = shortest_norm(fooled, 0.1);
+    CHECK(shortest < 1.9);
+    CHECK(shortest <= packing_norm(witness, 0.1));
+    // The witness is short: x = (0.657, 0, 0) is inside both K and K + v.
+    CHECK(packing_norm(witness, 0.1) < 2);
 }
 
 TEST_CASE("local optimality: certified for the 14-neighbour lattice at p = 0.6 and C1 at p = 2, not for C0 at p = 2 (a saddle)") {

@@ -272,12 +272,13 @@ TEST_CASE("--json: usage errors too print exactly one JSON document") {
 
 TEST_CASE("limits are stated and enforced, contradictions refused, undecided is exit 4") {
     check_error("density --family C0 --p 1.5 --digits 100000", 2, "from 1 to");
-    check_error("best --p 0.4", 2, "below 1/2");
+    check_error("best --p 0.09", 2, "below the supported p >= 1/10");
+    check_error("best --p 0.3 --certificate out.json", 2, "no replay of the star-body test");
     check_error("best --p 1 --starts 5000", 2, "--starts: 0 to 1000");
     check_error("best --scan 0.5:1:0.1", 2, "--scan needs --csv or --plot", false);
     check_error("best --p 1 --scan 0.5:1:0.1 --csv", 2, "not both", false);
     check_error("best --scan 0.5:100:0.1 --csv", 2, "at most 200", false);
-    check_error("best --scan 0.3:1:0.1 --csv", 2, "below 1/2", false);
+    check_error("best --scan 0.01:1:0.1 --csv", 2, "below the supported p >= 1/10", false);
     check_error("density --family C0 --p " + std::string(400, '1'), 2, "at most 100 characters");
     // (--scan prints CSV: with --json it is a contradiction, checked last.)
     check_error("superdisk --scan 1:2:0 --csv", 2, "step", false);

@@ -117,10 +117,16 @@ Json best_json(const BestLattice<I>& best, double total_seconds) {
         const SearchLattice<I>& lattice = best.checked[best.index];
         document["family"] = nullptr;
         document["start"] = lattice.guess.start;
-        // The exact lattice clears every contact by about 2^-39: no vector has norm exactly 2.
+        // The scaled lattice clears every near-contact of the guess: no vector is at the contact
+        // distance exactly.
+        const std::string note =
+            lattice.scale_exponent == 0
+                ? "the certified basis is the guess snapped to small fractions"
+                : "the certified basis is the guess scaled by 1 + 2^-" + std::to_string(lattice.scale_exponent) +
+                      ", so its near-contacts clear the contact distance";
         document["contacts"] = {{"count", lattice.check.contacts()},
                                 {"near_contacts_of_the_guess", triples_json(lattice.guess.near_contacts)},
-                                {"note", "the certified basis is the guess scaled by 1 + 2^-40, so its near-contacts clear 2"}};
+                                {"note", note}};
     }
     document["beats"] = comparison_json(best);
     const LocalOptimum<I>& local = *best.local;
@@ -317,6 +323,7 @@ int run(const BestCommandOptions& options) {
     const Rational p = parse_p(options.p);
     require_best_domain(p);
     if (!options.certificate.empty()) {
+        require_certificate_kind(p, std::nullopt);  // below 1/2: refused before the search
         require_writable_target(options.certificate);
         require_rounding_self_test();
     }
@@ -361,7 +368,7 @@ int run(const BestCommandOptions& options) {
 void add_best(CLI::App& app) {
     auto options = std::make_shared<BestCommandOptions>();
     CLI::App* command = app.add_subcommand("best", "The densest lattice packing superpack certifies at p: families and a search");
-    command->add_option("--p", options->p, "deformation parameter 1/2 <= p <= 10^6: a decimal or a fraction");
+    command->add_option("--p", options->p, "deformation parameter 1/10 <= p <= 10^6: a decimal or a fraction (below 1/2 a star body)");
     command->add_option("--scan", options->scan,
                         "a:b:h: one row per p = a, a + h, ... <= b (at most " + std::to_string(max_scan_values) +
                             "); needs --csv or --plot");

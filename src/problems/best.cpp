@@ -21,10 +21,10 @@ DoubleBasis midpoint_basis(const Basis<I>& basis) {
 }
 
 // The guess's double entries are dyadic rationals, so the exact basis is the guess itself,
-// scaled up by 1 + 2^-40: near-contacts of norm 2 (to rounding) then clear 2 by about 2^-39,
-// far above the enclosure widths, and the density drops by a relative 3 * 2^-40.
-Basis<Rational> exact_scaled(const DoubleBasis& guess) {
-    const Rational factor = Rational(1) + Rational(1, mpz_class(1) << 40);
+// scaled up by 1 + 2^-k: with k = 40, near-contacts of norm 2 (to rounding) clear 2 by about
+// 2^-39, far above the enclosure widths, and the density drops by a relative 3 * 2^-40.
+Basis<Rational> exact_scaled(const DoubleBasis& guess, int k) {
+    const Rational factor = Rational(1) + Rational(1, mpz_class(1) << k);
     Basis<Rational> exact{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) exact[i][j] = Rational(guess[i][j]) * factor;
@@ -66,16 +66,28 @@ std::optional<Basis<Rational>> snapped(const DoubleBasis& guess) {
 template <class Field, class I = typename Field::Interval>
 SearchLattice<I> check_candidate(const SearchCandidate& candidate, const Rational& p, const Field& field) {
     // A rational critical lattice is checked as it is; any other guess scaled up.
-    Basis<Rational> exact = exact_scaled(candidate.basis);
+    int scale_exponent = 40;
+    Basis<Rational> exact = exact_scaled(candidate.basis, scale_exponent);
     LatticeCheck<I> check;
     const std::optional<Basis<Rational>> fraction = snapped(candidate.basis);
     if (fraction) check = check_exact_lattice(*fraction, p, field);
-    if (fraction && check.verdict == Outcome::proved)
+    if (fraction && check.verdict == Outcome::proved) {
         exact = *fraction;
-    else
+        scale_exponent = 0;
+    } else {
         check = check_exact_lattice(exact, p, field);
+        // Below p = 1/2 the star-body test decides a vector only once the boxes around its near
+        // contact are small against the clearance, which 2^-39 is not within its budget: the
+        // guess is scaled up further, by 1 + 2^-k, until a scale is decided (NOTES.md 13.4).
+        for (int k : {24, 16, 10}) {
+            if (p >= Rational(1, 2) || check.verdict != Outcome::undecided) break;
+            scale_exponent = k;
+            exact = exact_scaled(candidate.basis, k);
+            check = check_exact_lattice(exact, p, field);
+        }
+    }
     const I phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(exact, field)));
-    return {candidate, exact, std::move(check), phi};
+    return {candidate, exact, scale_exponent, std::move(check), phi};
 }
 
 template <class Field, class I = typename Field::Interval>
@@ -84,7 +96,11 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
     BestLattice<I> best;
     const I p_interval = field.rational(p);
     std::vector<SearchStart> starts;
-    for (Family family : all_families()) {
+    // Below 1/2 the convex families are outside their domains and the insertion is the
+    // published lattice.
+    std::vector<Family> families = all_families();
+    if (p < Rational(1, 2)) families.push_back(Family::MinkowskiInsertion);
+    for (Family family : families) {
         try {
             require_in_domain(family, p);
         } catch (const InputError&) {
@@ -92,7 +108,7 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
             continue;
         }
         FamilyLattice<I> lattice = enclose_family(family, p, field);
-        LatticeCheck<I> check = check_family_lattice(lattice, p_interval);
+        LatticeCheck<I> check = check_family_lattice(lattice, p);
         if (lattice.basis) starts.push_back({to_string(family), midpoint_basis(*lattice.basis)});
         best.families.push_back({std::move(lattice), std::move(check)});
     }
@@ -145,15 +161,23 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
         return best;
     }
     best.status = Outcome::proved;
+    // Local optimality is proved on the KKT system of the 2p-norm constraints, which for a star
+    // body are not the packing constraints.
+    auto local_optimum = [&](const DoubleBasis& basis, const std::vector<Coefficients>& contacts) {
+        if (p >= Rational(1, 2)) return certify_local_optimum(basis, contacts, p_interval);
+        LocalOptimum<I> none;
+        none.reason = "not available below p = 1/2: the packing constraints are the gauge of K - K, not the 2p-norm";
+        return none;
+    };
     if (best.source == BestSource::family) {
         const FamilyEntry<I>& entry = best.families[best.index];
-        best.local = certify_local_optimum(midpoint_basis(*entry.lattice.basis), entry.check.contact_vectors, p_interval);
+        best.local = local_optimum(midpoint_basis(*entry.lattice.basis), entry.check.contact_vectors);
         best.configuration = match_configuration(best.families[best.index].check.contact_vectors);
         best.message = "the densest certified lattice is the family " + best_name(best) +
                        "; the search found nothing denser";
     } else {
         const SearchCandidate& guess = best.checked[best.index].guess;
-        best.local = certify_local_optimum(guess.basis, guess.near_contacts, p_interval);
+        best.local = local_optimum(guess.basis, guess.near_contacts);
         best.configuration = match_configuration(guess.near_contacts);
         best.message = leader ? "a search lattice, certified admissible, is denser than every certified family"
                               : "a search lattice, certified admissible; no published family is certified a packing here";
@@ -163,10 +187,11 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
 
 }  // namespace
 
+Rational best_lowest_p() { return Rational(1, 10); }
+
 void require_best_domain(const Rational& p) {
-    if (p < Rational(1, 2))
-        throw InputError("best: p = " + decimal_or_fraction_text(p) +
-                         " is below 1/2: the search and the lattice check need a convex superball (p >= 1/2)");
+    if (p < best_lowest_p())
+        throw InputError("best: p = " + decimal_or_fraction_text(p) + " is below the supported p >= 1/10 of the search");
     if (p > Rational(1000000))
         throw InputError("best: p = " + decimal_or_fraction_text(p) + " is beyond the supported p <= 10^6 of the search");
 }
