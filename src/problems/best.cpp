@@ -187,10 +187,8 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
 
 }  // namespace
 
-Rational best_lowest_p() { return Rational(1, 10); }
-
 void require_best_domain(const Rational& p) {
-    if (p < best_lowest_p())
+    if (p < Rational(1, 10))
         throw InputError("best: p = " + decimal_or_fraction_text(p) + " is below the supported p >= 1/10 of the search");
     if (p > Rational(1000000))
         throw InputError("best: p = " + decimal_or_fraction_text(p) + " is beyond the supported p <= 10^6 of the search");

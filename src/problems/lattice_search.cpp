@@ -46,10 +46,6 @@ double max_norm(const Vector& v) { return std::max({std::fabs(v[0]), std::fabs(v
 // the search treats it as no packing.
 constexpr double max_cube_pairs = 1e5;
 
-// Calls visit(c, c B) for one c per +-pair of every nonzero lattice vector with max |v_i| < bound
-// (and perhaps a few more), in floating point: |c_k| <= bound * sum_j |(B^-1)_jk| bounds two
-// coefficients, and each coordinate's bound |v_j| < bound gives the third an interval. False,
-// with nothing visited, when that takes more than max_cube_pairs pairs or B is singular.
 // The coefficient bounds of for_each_in_cube, the one to solve for (the widest) last; nothing
 // when they take more than max_cube_pairs pairs or B is singular.
 struct CubeLimits {
@@ -78,6 +74,10 @@ std::optional<CubeLimits> cube_limits(const DoubleBasis& b, double bound) {
     return cube;
 }
 
+// Calls visit(c, c B) for one c per +-pair of every nonzero lattice vector with max |v_i| < bound
+// (and perhaps a few more), in floating point: |c_k| <= bound * sum_j |(B^-1)_jk| bounds two
+// coefficients, and each coordinate's bound |v_j| < bound gives the third an interval. False,
+// with nothing visited, when that takes more than max_cube_pairs pairs or B is singular.
 template <class Visit>
 bool for_each_in_cube(const DoubleBasis& b, double bound, Visit&& visit) {
     const std::optional<CubeLimits> cube = cube_limits(b, bound);
@@ -141,7 +141,6 @@ DoubleBasis scaled(DoubleBasis b, double factor) {
     return b;
 }
 
-// log|det B| - 3 log(lambda / 2): minus the log of the density, up to log V.
 // The shortest packing norm over the short triples and `extra` (the search's cuts below 1/2).
 double shortest_over(const DoubleBasis& b, double p, const std::vector<Triple>& extra) {
     double shortest = HUGE_VAL;
@@ -154,6 +153,7 @@ double shortest_over(const DoubleBasis& b, double p, const std::vector<Triple>& 
     return shortest;
 }
 
+// log|det B| - 3 log(lambda / 2): minus the log of the density, up to log V.
 double objective(const DoubleBasis& b, double p, const std::vector<Triple>& extra = {}) {
     const double d = std::fabs(determinant(b));
     const double shortest = shortest_over(b, p, extra);
@@ -340,10 +340,13 @@ std::vector<Triple> near_shortest(const DoubleBasis& b, double p, double toleran
     return near;
 }
 
-DoubleBasis normalised(DoubleBasis b, double p) {
+// Reduced and scaled to shortest packing norm 2; nothing when the basis is too skewed to
+// enumerate (shortest_norm 0).
+std::optional<DoubleBasis> normalised(DoubleBasis b, double p) {
     reduce(b);
     const double shortest = shortest_norm(b, p);
-    return shortest > 0 ? scaled(b, 2 / shortest) : b;  // 0: too skewed to enumerate, left for the check to reject
+    if (!(shortest > 0)) return std::nullopt;
+    return scaled(b, 2 / shortest);
 }
 
 }  // namespace
@@ -397,7 +400,9 @@ SearchResult search_dense_lattices(double p, double volume, const std::vector<Se
     SearchResult result;
     const auto begin = std::chrono::steady_clock::now();
     for (const SearchStart& start : all) {
-        DoubleBasis b = normalised(start.basis, p);
+        const std::optional<DoubleBasis> first = normalised(start.basis, p);
+        if (!first) continue;
+        DoubleBasis b = *first;
         // Below 1/2 the objective over the short triples alone may miss the shortest vector, and
         // the whole enumeration costs hundreds of vectors an evaluation: the vectors the search
         // has missed join its objective as cuts, and it runs again, until none is missed.
@@ -415,18 +420,19 @@ SearchResult search_dense_lattices(double p, double volume, const std::vector<Se
             });
             if (cuts.size() == before) break;
         }
-        b = normalised(b, p);
-        if (!enumerable || !(shortest_norm(b, p) > 0)) continue;
-        SearchCandidate candidate{start.name, b, 0, {}};
+        const std::optional<DoubleBasis> end = normalised(b, p);
+        if (!enumerable || !end) continue;
+        SearchCandidate candidate{start.name, *end, 0, {}};
         // The pattern search stops near, not at, a kink: the active set is guessed at growing
         // tolerances, and the first that Newton's method turns into a KKT point is kept. Below
         // p = 1/2 the constraints are the difference body's gauge, which the KKT system does not
         // model: the pattern search's end point is the candidate.
         for (double tolerance : {1e-7, 1e-5, 1e-4, 1e-3, 1e-2}) {
             if (p < 0.5) break;
-            const std::optional<KktPoint> point = kkt_point(b, p, near_shortest(b, p, tolerance));
-            if (point) {
-                candidate.basis = normalised(point->basis, p);
+            const std::optional<KktPoint> point = kkt_point(*end, p, near_shortest(*end, p, tolerance));
+            const std::optional<DoubleBasis> polished = point ? normalised(point->basis, p) : std::nullopt;
+            if (polished) {
+                candidate.basis = *polished;
                 break;
             }
         }

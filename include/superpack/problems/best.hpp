@@ -60,7 +60,6 @@ struct BestOptions {
 
 // The search's domain, 1/10 <= p <= 10^6: throws InputError outside it. At p = 1/20 the search
 // did not end within 38 minutes and its finds were undecided by the star test (NOTES.md 13.4).
-Rational best_lowest_p();
 void require_best_domain(const Rational& p);
 // Requires the domain above.
 BestLattice<DInterval> find_best_lattice(const Rational& p, const DoubleField& field, const BestOptions& options);

@@ -42,7 +42,7 @@ struct SearchCandidate {
 };
 
 struct SearchResult {
-    std::vector<SearchCandidate> candidates;  // one per start (below 1/2: but those that end too skewed to enumerate), densest first
+    std::vector<SearchCandidate> candidates;  // one per start but those too skewed to enumerate (below 1/2), densest first
     long evaluations = 0;                     // of F
     double seconds = 0;                       // wall time of the search
 };
