@@ -116,14 +116,14 @@ TEST_CASE("Minkowski's lattice shrunk towards its first contact: overlapping at 
     check_sampled_disjoint(after);
 }
 
-TEST_CASE("tips: 2 Z^3 is a packing (the tips touch on the axes); tip-to-tip off the axes is a near contact") {
+TEST_CASE("tips: 2 Z^3 is a packing (the tips touch on the axes), and so is tip-to-tip off the axes") {
     CHECK(check("2,0,0; 0,2,0; 0,0,2").verdict == Outcome::proved);
     // (1, 1, 0): the tip (1, 0, 0) of K is the tip of K + v's arm along -y (NOTES.md 13.1): the
-    // interiors are disjoint, but no box at the common tip can be discarded.
+    // interiors are disjoint, which no box cover proves and the closed form does (13.5).
     const auto touching = check("1,1,0; 1,-1,0; 0,0,2");
-    CHECK(touching.verdict == Outcome::undecided);
-    CHECK(touching.near_contacts.size() == 2);
-    CHECK_FALSE(touching.witness);
+    CHECK(touching.verdict == Outcome::proved);
+    CHECK(touching.near_contacts.empty());
+    check_sampled_disjoint(touching);
     CHECK(check("99/100,99/100,0; 99/100,-99/100,0; 0,0,2").verdict == Outcome::refuted);
     CHECK(check("101/100,101/100,0; 101/100,-101/100,0; 0,0,2").verdict == Outcome::proved);
 }

@@ -5,9 +5,11 @@
 // y-arm). So this test decides the question itself, for any p > 0 and a v known as a box of
 // numbers (each answer holds for every v in it):
 //
-//   - disjoint (proved): a branch and bound over x covers the region where both bodies can have
-//     points, [-1, 1]^d and v + [-1, 1]^d, and discards every box on which g certainly is >= 1 or
-//     g(. - v) certainly is >= 1, after contracting it by the two inequalities;
+//   - disjoint (proved): for 2p <= 1 first by the closed form of geometry/star_cases.hpp, which
+//     decides contacts too; otherwise, or when that is undecided, a branch and bound over x
+//     covers the region where both bodies can have points, [-1, 1]^d and v + [-1, 1]^d, and
+//     discards every box on which g certainly is >= 1 or g(. - v) certainly is >= 1, after
+//     contracting it by the two inequalities;
 //   - overlapping (refuted): a point x with g(x) < 1 and g(x - v) < 1, both certified (the
 //     witness, with the two values);
 //   - undecided: the box budget ran out, typically at a contact (boundaries that touch, where no
@@ -28,6 +30,9 @@ namespace superpack {
 struct StarOverlapOptions {
     long max_boxes = 200000;  // the budget of boxes decided before the answer is undecided
     int max_remaining = 16;   // of the boxes left at an undecided answer, how many are listed
+    // For 2p <= 1, decide by the closed form (geometry/star_cases.hpp) before any box; false tests
+    // the box cover alone.
+    bool closed_form = true;
 };
 
 template <class I>
