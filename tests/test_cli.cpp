@@ -273,7 +273,7 @@ TEST_CASE("--json: usage errors too print exactly one JSON document") {
 TEST_CASE("limits are stated and enforced, contradictions refused, undecided is exit 4") {
     check_error("density --family C0 --p 1.5 --digits 100000", 2, "from 1 to");
     check_error("best --p 0.09", 2, "below the supported p >= 1/10");
-    check_error("best --p 0.3 --certificate out.json", 2, "no replay of the star-body test");
+    check_error("density --family minkowski-insertion --p 0.3 --certificate out.json", 2, "no certificate kind for the family");
     check_error("best --p 1 --starts 5000", 2, "--starts: 0 to 1000");
     check_error("best --scan 0.5:1:0.1", 2, "--scan needs --csv or --plot", false);
     check_error("best --p 1 --scan 0.5:1:0.1 --csv", 2, "not both", false);

@@ -89,10 +89,11 @@ Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p) {
 
 void require_certificate_kind(const Rational& p, std::optional<Family> family) {
     if (family) require_in_domain(*family, p);  // the first problem named is the domain's
+    // The insertion's basis is Minkowski's scaled by a root of p (Eq. 10), not exact: its
+    // lattice is certified through the star-lattice-check kind of an exact basis only.
     if (family == Family::MinkowskiInsertion)
-        throw InputError("--certificate: no certificate kind for minkowski-insertion yet (its check below p = 1/2 is the "
-                         "star-body test, which the checker does not replay yet)");
-    if (p < Rational(1, 2)) throw InputError("--certificate: the checker has no replay of the star-body test (p < 1/2) yet");
+        throw InputError("--certificate: no certificate kind for the family minkowski-insertion (its basis is not exact); "
+                         "check-lattice --family minkowski-insertion --certificate certifies its exact basis");
 }
 
 Json family_definition_json(Family family) {

@@ -9,6 +9,14 @@ namespace superpack {
 
 namespace {
 
+std::array<Rational, 3> exact_vector(const Basis<Rational>& basis, const Coefficients& c) {
+    std::array<Rational, 3> v;
+    for (int j = 0; j < 3; ++j) v[j] = c[0] * basis[0][j] + c[1] * basis[1][j] + c[2] * basis[2][j];
+    return v;
+}
+
+}  // namespace
+
 Json rational_basis_json(const Basis<Rational>& basis) {
     Json rows = Json::array();
     for (int i = 0; i < 3; ++i) {
@@ -19,13 +27,26 @@ Json rational_basis_json(const Basis<Rational>& basis) {
     return rows;
 }
 
-std::array<Rational, 3> exact_vector(const Basis<Rational>& basis, const Coefficients& c) {
-    std::array<Rational, 3> v;
-    for (int j = 0; j < 3; ++j) v[j] = c[0] * basis[0][j] + c[1] * basis[1][j] + c[2] * basis[2][j];
-    return v;
+template <class Field>
+Json enumeration_proof_json(const LatticeCheck<typename Field::Interval>& check, const Basis<Rational>& basis,
+                            const Field& field) {
+    using I = typename Field::Interval;
+    // The enumeration ran on the reduced basis R = U B (NOTES.md 5.6): its transform, and the data
+    // its coefficient bound comes from, |det R| and ||r_j x r_k||_1 (NOTES.md 5.2).
+    const BasisReduction reduction = check.reduction ? *check.reduction : BasisReduction{true, "", identity_transform(), basis};
+    const Basis<I> enclosed = enclose_basis(reduction.reduced, field);
+    Json cross_norms = Json::array();
+    for (int i = 0; i < 3; ++i) {
+        const auto& u = enclosed[(i + 1) % 3];
+        const auto& w = enclosed[(i + 2) % 3];
+        const I norm = abs(u[1] * w[2] - u[2] * w[1]) + abs(u[2] * w[0] - u[0] * w[2]) + abs(u[0] * w[1] - u[1] * w[0]);
+        cross_norms.push_back(exact_interval_json(norm));
+    }
+    return Json{{"kind", "enumeration"},
+                {"reduction", reduction_json(reduction)},
+                {"coefficient_bound", coefficients_json(check.coefficient_bound)},
+                {"bound_data", Json{{"determinant", exact_interval_json(abs(determinant(enclosed)))}, {"cross_norms", cross_norms}}}};
 }
-
-}  // namespace
 
 template <class Field>
 Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, const Basis<Rational>& basis,
@@ -35,18 +56,7 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
     const Json basis_json = rational_basis_json(basis);
     const bool packing = check.verdict == Outcome::proved;
 
-    // The enumeration ran on the reduced basis R = U B (NOTES.md 5.6): its transform, and the data
-    // its coefficient bound comes from, |det R| and ||r_j x r_k||_1 (NOTES.md 5.2).
-    const BasisReduction reduction = check.reduction ? *check.reduction : BasisReduction{true, "", identity_transform(), basis};
-    const Basis<Rational>& reduced = reduction.reduced;
-    const Basis<I> enclosed = enclose_basis(reduced, field);
-    Json cross_norms = Json::array();
-    for (int i = 0; i < 3; ++i) {
-        const auto& u = enclosed[(i + 1) % 3];
-        const auto& w = enclosed[(i + 2) % 3];
-        const I norm = abs(u[1] * w[2] - u[2] * w[1]) + abs(u[2] * w[0] - u[0] * w[2]) + abs(u[0] * w[1] - u[1] * w[0]);
-        cross_norms.push_back(exact_interval_json(norm));
-    }
+    const Basis<Rational>& reduced = check.reduction ? check.reduction->reduced : basis;
     Json candidates = Json::array(), contacts = Json::array();
     for (const auto& candidate : check.evaluated) {
         const bool contact = std::find(check.contact_vectors.begin(), check.contact_vectors.end(), candidate.coefficients) !=
@@ -74,12 +84,8 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
     for (const auto& c : check.contact_vectors) contact_vectors.push_back(coefficients_json(c));
 
     Json data{{"basis", basis_json}, {"p", rational_text(p)}, {"packing", packing}};
-    Json proof{{"kind", "enumeration"},
-               {"reduction", reduction_json(reduction)},
-               {"coefficient_bound", coefficients_json(check.coefficient_bound)},
-               {"bound_data", Json{{"determinant", exact_interval_json(abs(determinant(enclosed)))},
-                                   {"cross_norms", cross_norms}}},
-               {"candidates", candidates}};
+    Json proof = enumeration_proof_json(check, basis, field);
+    proof["candidates"] = candidates;
     if (packing) {
         data["contacts"] = check.contacts();
         data["contact_vectors"] = contact_vectors;
@@ -93,6 +99,8 @@ Json lattice_certificate(const LatticeCheck<typename Field::Interval>& check, co
     return certificate_document(certificate_head("check-lattice", field, digits), claim, inputs, proof);
 }
 
+template Json enumeration_proof_json(const LatticeCheck<DInterval>&, const Basis<Rational>&, const DoubleField&);
+template Json enumeration_proof_json(const LatticeCheck<Ball>&, const Basis<Rational>&, const BallField&);
 template Json lattice_certificate(const LatticeCheck<DInterval>&, const Basis<Rational>&, const Rational&, const DoubleField&, long);
 template Json lattice_certificate(const LatticeCheck<Ball>&, const Basis<Rational>&, const Rational&, const BallField&, long);
 

@@ -11,8 +11,8 @@
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/certificate.hpp"
 #include "superpack/cert/family_certificate.hpp"
-#include "superpack/cert/lattice_certificate.hpp"
 #include "superpack/cert/local_optimum_certificate.hpp"
+#include "superpack/cert/star_lattice_certificate.hpp"
 #include "superpack/problems/best.hpp"
 
 namespace superpack::cli {
@@ -323,7 +323,6 @@ int run(const BestCommandOptions& options) {
     const Rational p = parse_p(options.p);
     require_best_domain(p);
     if (!options.certificate.empty()) {
-        require_certificate_kind(p, std::nullopt);  // below 1/2: refused before the search
         require_writable_target(options.certificate);
         require_rounding_self_test();
     }
@@ -345,13 +344,16 @@ int run(const BestCommandOptions& options) {
             try {
                 // A certified local optimum proves admissibility and phi of the critical lattice as
                 // well: it subsumes the lattice check of the best lattice.
-                if (best.local->verdict == Outcome::proved)
+                if (best.local && best.local->verdict == Outcome::proved)
                     write_certificate(options.certificate, local_optimum_certificate(*best.local, p, field, digits));
-                else if (best.source == BestSource::family)
-                    write_certificate(options.certificate, family_certificate(best.families[best.index].lattice, p, field, digits));
+                else if (best.source == BestSource::search)
+                    write_certificate(options.certificate, exact_lattice_certificate(best.checked[best.index].check,
+                                                                                     best.checked[best.index].basis, p, field, digits));
+                else if (p < Rational(1, 2))  // the insertion, whose lattice is Minkowski's exact basis
+                    write_certificate(options.certificate, exact_lattice_certificate(best.families[best.index].check,
+                                                                                     minkowski_octahedron_basis(), p, field, digits));
                 else
-                    write_certificate(options.certificate,
-                                      lattice_certificate(best.checked[best.index].check, best.checked[best.index].basis, p, field, digits));
+                    write_certificate(options.certificate, family_certificate(best.families[best.index].lattice, p, field, digits));
             } catch (const std::runtime_error& error) {
                 throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
             }
@@ -380,7 +382,7 @@ void add_best(CLI::App& app) {
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_option("--certificate", options->certificate,
                         "write the certificate: local-optimum when the critical lattice is locally optimal, else the "
-                        "best lattice's family-lattice or lattice-check claim");
+                        "best lattice's family-lattice, lattice-check or (below p = 1/2) star-lattice-check claim");
     command->add_option("--seed", options->seed, "seed of the search's random starts and directions (default 1)");
     command->add_option("--starts", options->starts,
                         "random starts besides the families, 0 to " + std::to_string(max_starts) + " (default 16)");

@@ -1,5 +1,6 @@
 // superpack check-lattice --p P (--basis "a,b,c; d,e,f; g,h,i" | --family F) [--digits D] [--json]
 //                         [--certificate FILE]
+#include <functional>
 #include <memory>
 
 #include "common.hpp"
@@ -7,7 +8,7 @@
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/audit_certificate.hpp"
 #include "superpack/cert/family_certificate.hpp"
-#include "superpack/cert/lattice_certificate.hpp"
+#include "superpack/cert/star_lattice_certificate.hpp"
 #include "superpack/problems/family_lattice_check.hpp"
 
 namespace superpack::cli {
@@ -62,9 +63,11 @@ void print_table(const LatticeCheck<I>& check, const std::optional<I>& phi, int 
               << ", |c| <= " << check.coefficient_bound[2] << (check.reduction ? "  (in the reduced basis)" : "") << "\n";
 }
 
-void write_or_fail(const std::string& path, const Json& certificate) {
+// Builds and writes the certificate; a certificate the builder refuses (a candidate its claim
+// kind cannot replay) or a failed write is a usage error with the reason, never an internal one.
+void write_or_fail(const std::string& path, const std::function<Json()>& build) {
     try {
-        write_certificate(path, certificate);
+        write_certificate(path, build());
     } catch (const std::runtime_error& error) {
         throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
     }
@@ -76,7 +79,12 @@ int run(const CheckLatticeOptions& options) {
     const Rational p = parse_p(options.p);
     if (options.basis.size() > 1000) throw InputError("--basis: at most 1000 characters, got " + std::to_string(options.basis.size()));
     if (!options.certificate.empty()) {
-        require_certificate_kind(p, options.family.empty() ? std::nullopt : std::optional<Family>(parse_family(options.family)));
+        // The insertion's lattice is exact (Minkowski's basis): its check is certified as a basis.
+        const std::optional<Family> family = options.family.empty() ? std::nullopt : std::optional<Family>(parse_family(options.family));
+        if (family == Family::MinkowskiInsertion)
+            require_in_domain(*family, p);
+        else
+            require_certificate_kind(p, family);
         require_writable_target(options.certificate);
         require_rounding_self_test();
     }
@@ -94,14 +102,18 @@ int run(const CheckLatticeOptions& options) {
             phi = lattice.phi;
             document["family"] = to_string(family);
             if (!options.certificate.empty() && check.verdict != Outcome::undecided)
-                write_or_fail(options.certificate, family_lattice_check_certificate(lattice, check, p, field, digits));
+                write_or_fail(options.certificate, [&] {
+                    return family == Family::MinkowskiInsertion
+                               ? exact_lattice_certificate(check, minkowski_octahedron_basis(), p, field, digits)
+                               : family_lattice_check_certificate(lattice, check, p, field, digits);
+                });
         } else {
             const Basis<Rational> basis = parse_basis(options.basis);
             check = check_exact_lattice(basis, p, field);
             phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field)));
             document["basis"] = options.basis;
             if (!options.certificate.empty() && check.verdict != Outcome::undecided)
-                write_or_fail(options.certificate, lattice_certificate(check, basis, p, field, digits));
+                write_or_fail(options.certificate, [&] { return exact_lattice_certificate(check, basis, p, field, digits); });
         }
         if (options.json) {
             document.update(lattice_check_json(check, false));

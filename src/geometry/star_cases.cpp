@@ -35,6 +35,9 @@ Outcome star_disjoint_by_cases(const Superball& body, const std::vector<I>& v) {
     std::vector<bool> reaches_one;  // |v_i| >= 1 for every v in the box, so |v_i|^q >= 1 exactly
     for (const I& x : v) {
         size.push_back(abs(x));
+        // K lies in [-1, 1]^d: a coordinate of size >= 2 parts the two cubes, exactly (the case
+        // at k would otherwise weigh 1 + 1 against 2 through rounded powers).
+        if (certainly_nonnegative(size.back() - field.integer(2))) return Outcome::proved;
         power.push_back(pow_abs(x, q));
         reaches_one.push_back(certainly_nonnegative(size.back() - one));
     }

@@ -19,9 +19,9 @@ namespace superpack {
 template <class I>
 Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p);
 
-// Throws InputError for a family or p without a certificate kind the checker replays: below
-// p = 1/2 (the star-body test) and the insertion (at every p), so that a command refuses
-// --certificate before computing.
+// Throws InputError for a family outside its domain at p and for the insertion, which has no
+// family claim (check-lattice certifies its exact basis instead), so that a command refuses
+// --certificate before computing. Below p = 1/2 an exact basis has the star-lattice-check kind.
 void require_certificate_kind(const Rational& p, std::optional<Family> family);
 
 // What a claim states of the family's definition beside its name: for S6 {"contact_pairs": the

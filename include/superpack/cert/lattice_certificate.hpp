@@ -7,6 +7,16 @@
 
 namespace superpack {
 
+// The basis rows as exact texts, "3/2".
+Json rational_basis_json(const Basis<Rational>& basis);
+
+// The part of an enumeration's proof the checker replays first (NOTES.md 5.2 and 5.6): {kind
+// "enumeration", reduction, coefficient_bound, bound_data {determinant, cross_norms}} of the
+// reduced basis the check enumerated (the given one when the check has no reduction).
+template <class Field>
+Json enumeration_proof_json(const LatticeCheck<typename Field::Interval>& check, const Basis<Rational>& basis,
+                            const Field& field);
+
 // Builds the certificate of a decided check of an exact basis at an exact p (the check must
 // come from check_exact_lattice(basis, p, field)). Throws std::runtime_error for an undecided
 // check: no certificate without a proof.

@@ -10,7 +10,8 @@
 //   - refuted (they meet): some case certainly holds; no witness point comes with it;
 //   - undecided: a case at its threshold within the enclosures (boundaries that touch).
 // A term with |v_i| >= 1 makes A_S >= 1 exactly, by monotonicity, without the power's rounding:
-// so tips that meet arms or tips, as v = (1, 1, 0), are decided, which no box cover can do.
+// so tips that meet arms or tips, as v = (1, 1, 0), are decided, which no box cover can do; and a
+// coordinate with |v_k| >= 2 parts the cubes [-1, 1]^d and v + [-1, 1]^d (proved at once).
 #pragma once
 #include <vector>
 
