@@ -9,14 +9,21 @@ namespace {
 
 // The least c >= max(a, b) with (c - a)^r + (c - b)^r >= w, r = 1/q > 1: the left side is convex
 // and increasing in c, so Newton's method from a point above the root descends to it monotonically.
+// The start: with d = c - max(a, b) and e = |a - b| the equation is d^r + (d + e)^r = w, so
+// d <= w^(1/r) - e, and there the left side is already >= w. Starting that close matters: far
+// above the root each Newton step only shrinks the distance by 1 - 1/r (0.8 at p = 1/10), and this
+// function is the search's inner loop at small p.
 double level(double a, double b, double w, double r) {
     const double low = std::max(a, b);
-    auto h = [&](double c) { return std::pow(c - a, r) + std::pow(c - b, r) - w; };
-    if (h(low) >= 0) return low;
-    double c = low + std::pow(w, 1 / r);  // one term alone reaches w there
+    const double gap = std::fabs(a - b);
+    if (std::pow(gap, r) >= w) return low;
+    double c = low + std::max(0.0, std::pow(w, 1 / r) - gap);
     for (int step = 0; step < 60; ++step) {
-        const double value = h(c);
-        const double slope = r * (std::pow(c - a, r - 1) + std::pow(c - b, r - 1));
+        const double s = c - a, t = c - b;
+        const double power_s = std::pow(s, r), power_t = std::pow(t, r);
+        const double value = power_s + power_t - w;
+        // d/dc (c - a)^r = r (c - a)^r / (c - a), and 0 at c = a since r > 1.
+        const double slope = r * ((s > 0 ? power_s / s : 0) + (t > 0 ? power_t / t : 0));
         if (!(value > 0) || !(slope > 0)) break;
         const double next = std::max(low, c - value / slope);
         if (!(next < c)) break;
