@@ -4,6 +4,7 @@
 // re-evaluated here in binary64 from the exact basis, apart from the library's arithmetic.
 #include <cmath>
 #include <random>
+#include <sstream>
 
 #include "cli_run.hpp"
 #include "superpack/geometry/lattice.hpp"
@@ -170,4 +171,29 @@ TEST_CASE("family minkowski-insertion: phi = V(p) 27/38 (mpmath), a packing belo
     CHECK(nlohmann::json::parse(refused.out)["error"].get<std::string>().find("check-lattice --family minkowski-insertion") !=
           std::string::npos);
     CHECK(run("audit --family minkowski-insertion").status == 2);
+}
+
+TEST_CASE("best --scan across 1/2: the insertion's columns, last in each row, enclose V(p) 27/38 (mpmath) where p <= 1/2") {
+    const Run scan = run("best --scan 0.45:0.55:0.05 --starts 0 --csv");
+    INFO(scan.err);
+    REQUIRE(scan.status == 0);
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream lines(scan.out);
+    for (std::string line; std::getline(lines, line);) {
+        std::vector<std::string> fields;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
+        if (line.back() == ',') fields.push_back("");
+        REQUIRE(fields.size() >= 3);
+        rows.push_back({fields.end() - 3, fields.end()});
+    }
+    REQUIRE(rows.size() == 4);
+    CHECK(rows[0] == std::vector<std::string>{"minkowski-insertion_lo", "minkowski-insertion_hi", "minkowski-insertion_packing"});
+    const auto encloses = [](const std::vector<std::string>& row, const std::string& phi) {
+        return row[2] == "yes" && meets(hull(reference(row[0]), reference(row[1])), phi);
+    };
+    CHECK(encloses(rows[1], "0.71500508003315159757303438243295366830029485912929"));
+    CHECK(encloses(rows[2], "0.94736842105263157894736842105263157894736842105263"));  // 18/19, the octahedra
+    CHECK(rows[3] == std::vector<std::string>{"", "", "outside"});
+    CHECK(scan.out.find("\n0.45,") != std::string::npos);
 }

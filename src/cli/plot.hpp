@@ -30,6 +30,7 @@ struct PlotSeries {
 struct PlotAxes {
     std::string title, x_label, y_label;
     std::optional<std::pair<double, double>> y_range;
+    bool log_y = false;  // a logarithmic y axis, for values spanning decades
 };
 
 // Before the slow work that makes the data: throws FileError unless `path` can be written

@@ -97,10 +97,8 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
     const I p_interval = field.rational(p);
     std::vector<SearchStart> starts;
     // Below 1/2 the convex families are outside their domains and the insertion is the
-    // published lattice.
-    std::vector<Family> families = all_families();
-    if (p < Rational(1, 2)) families.push_back(Family::MinkowskiInsertion);
-    for (Family family : families) {
+    // published lattice; at 1/2 it is Minkowski's octahedron packing, as O1 is.
+    for (Family family : convex_families_and_insertion()) {
         try {
             require_in_domain(family, p);
         } catch (const InputError&) {

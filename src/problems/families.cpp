@@ -24,6 +24,12 @@ const char* to_string(Family family) {
 
 std::vector<Family> all_families() { return {Family::C0, Family::C1, Family::O0, Family::O1, Family::D14, Family::S6}; }
 
+std::vector<Family> convex_families_and_insertion() {
+    std::vector<Family> families = all_families();
+    families.push_back(Family::MinkowskiInsertion);
+    return families;
+}
+
 std::string family_source(Family family) {
     const std::string jst = "Jiao, Stillinger & Torquato, Phys. Rev. E 79, 041309 (2009), ";
     switch (family) {
@@ -45,9 +51,8 @@ std::string family_source(Family family) {
 }
 
 Family parse_family(const std::string& name) {
-    for (Family family : all_families())
+    for (Family family : convex_families_and_insertion())
         if (name == to_string(family)) return family;
-    if (name == to_string(Family::MinkowskiInsertion)) return Family::MinkowskiInsertion;
     throw InputError("unknown family '" + name + "' (expected C0, C1, O0, O1, D14, S6 or minkowski-insertion)");
 }
 

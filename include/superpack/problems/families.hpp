@@ -26,6 +26,8 @@ Family parse_family(const std::string& name);  // throws InputError
 // The convex families (p >= 1/2), which the report, `best` and `audit` run through; the insertion
 // (0 < p <= 1/2) only by its name.
 std::vector<Family> all_families();
+// The convex families and then the insertion: what `best` checks at p, each where its domain holds.
+std::vector<Family> convex_families_and_insertion();
 
 // The insertion (JST 2009, Sec. IV.C, Eq. 10): for 0 < p <= 1/2 the superball lies in the
 // octahedron |x| + |y| + |z| <= 1 (sum |x_i|^(2p) <= 1 makes each |x_i| <= 1, so |x_i| <= |x_i|^(2p)),
