@@ -35,7 +35,9 @@ StarVerdict star_cases(const RationalVector& v, const mpq_class& q, mpfr_prec_t 
                 const Real lower_margin = pow_abs(one - in_s, inverse_q) + pow_abs(one - in_t, inverse_q) - size;
                 if (positive(lower_margin)) return StarVerdict::overlapping;
             }
-            if (positive(reach_upper(in_s, inverse_q) + reach_upper(in_t, inverse_q) - size)) every_case_fails = false;
+            // The case fails only where the reach cannot exceed |v_k|: a margin whose enclosure
+            // meets 0 (a contact within the rounding) leaves the answer undecided.
+            if (!negative(reach_upper(in_s, inverse_q) + reach_upper(in_t, inverse_q) - size)) every_case_fails = false;
         }
     }
     return every_case_fails ? StarVerdict::disjoint : StarVerdict::undecided;

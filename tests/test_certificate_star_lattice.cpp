@@ -164,3 +164,32 @@ TEST_CASE("check-lattice and best below 1/2 write certificates that verify on th
     CHECK(verified.out.find("star-lattice-check") != std::string::npos);
     std::filesystem::remove_all(folder);
 }
+
+TEST_CASE("at an arm-to-arm contact the case tests decide only what their precision resolves, never the wrong side") {
+    // v = (a, 1/2, 0) at p = 3/10: the interiors meet iff a < a* = 1 + (1 - 2^-q)^(1/q)
+    // (scripts/make_star_threshold.py, mpmath at 160 digits). Rationals 10^-120 on either side.
+    std::ifstream file(std::string(SUPERPACK_TEST_DATA) + "/star_threshold.json");
+    const auto data = nlohmann::json::parse(file);
+    const std::string digits = data["threshold"];
+    const std::string fraction = digits.substr(2, 120);
+    const mpq_class scale("1" + std::string(120, '0'));
+    const mpq_class below = 1 + mpq_class(fraction) / scale, above = below + 1 / scale;
+    const mpq_class q = mpq_class(3, 5), half(1, 2);
+    using superpack_checker::StarVerdict;
+    const auto checker = [&](const mpq_class& a, mpfr_prec_t precision) {
+        return superpack_checker::star_cases({a, half, 0}, q, precision);
+    };
+    // 128 bits cannot see 10^-120: neither side may be claimed.
+    CHECK(checker(below, 128) == StarVerdict::undecided);
+    CHECK(checker(above, 128) == StarVerdict::undecided);
+    CHECK(checker(below, 512) == StarVerdict::overlapping);
+    CHECK(checker(above, 512) == StarVerdict::disjoint);
+    const Superball body = make_superball(3, Rational(3, 10));
+    for (const mpq_class& a : {below, above}) {
+        const std::vector<DInterval> v{Binary64{}.rational(Rational(a)), Binary64{}.rational(Rational(half)), Binary64{}.rational(0)};
+        CHECK(star_disjoint_by_cases(body, v) == Outcome::undecided);
+        const BallField precise{640};  // 10^-120 is 2^-399
+        const std::vector<Ball> sharp{precise.rational(Rational(a)), precise.rational(Rational(half)), precise.rational(0)};
+        CHECK(star_disjoint_by_cases(body, sharp) == (a == below ? Outcome::refuted : Outcome::proved));
+    }
+}
