@@ -94,6 +94,14 @@ certify best-p0.6 best --p 0.6
 certify best-p2 best --p 2
 certify best-p0.9 best --p 0.9
 
+# Concave superballs (NOTES 13.5, kind star-lattice-check): the paper's insertion at p = 3/10 (a
+# packing), Minkowski's lattice scaled by 1/4 (an overlap, a rational witness point), the tips off
+# the axes (a packing with tip contacts, decided by the closed form), and the best lattice at 0.3.
+certify star-lattice-insertion-p0.3 check-lattice --p 3/10 --family minkowski-insertion
+certify star-lattice-quarter-p0.3-overlapping check-lattice --p 3/10 --basis "1/6,1/6,-1/6; -1/12,1/3,-1/12; 1/12,-1/12,-1/3"
+certify star-lattice-tips-p0.3 check-lattice --p 3/10 --basis "1,1,0; 1,-1,0; 0,0,2"
+certify best-p0.3 best --p 0.3
+
 # critical at p = 2, gap 0, on the chart boxes of half-width 1e-5 around C1's four images (NOTES
 # 12.8): 82 boxes closed by the determinant bound or C1's closing region, each tree replayed by
 # the checker. The whole domain's trees would exceed the checker's 256 MiB file limit.
