@@ -3,6 +3,7 @@
 // The densest lattice packing of the superball at p that superpack certifies (problems/best.hpp).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include "common.hpp"
@@ -30,7 +31,9 @@ struct BestCommandOptions {
 // 2-core machine (D14's root search at that precision), 3 s at p = 2.
 constexpr long max_digits = 1000;
 constexpr int max_starts = 1000;
-// A scan row takes about 1 to 5 s (the search): 200 rows are at most a quarter of an hour.
+// A scan row takes about 1 to 5 s above p = 1/2 and 1 to 25 s below, but 3.5 min at p = 1/10
+// (NOTES.md 13.6): 200 rows are at most a quarter of an hour above 1/2 and some hours crowded
+// near 1/10; each row's start is a progress line on stderr.
 constexpr std::size_t max_scan_values = 200;
 
 Json triples_json(const std::vector<Coefficients>& triples) {
@@ -267,12 +270,18 @@ struct ScanCurves {
 };
 
 // Above 1/2 the densities lie in 0.7..1; below, the insertion's V(p) * 27/38 falls to 1e-5 at
-// p = 1/10, so a scan that reaches below 1/2 gets a logarithmic axis.
-PlotAxes scan_axes(const std::vector<Rational>& values) {
+// p = 1/10, so a scan that reaches below 1/2 gets a logarithmic axis from the decade below its
+// least value. Both end at 1: a V/|det| above it (a dotted curve) is no density.
+PlotAxes scan_axes(const std::vector<Rational>& values, const std::vector<PlotSeries>& series) {
     const std::string title = "Densest certified lattice packings of superballs (curves through the midpoints of the certified enclosures)";
     const bool concave = std::any_of(values.begin(), values.end(), [](const Rational& p) { return p < Rational(1, 2); });
-    if (concave) return {title, "p", "lattice packing density phi (log scale)", std::nullopt, true};
-    return {title, "p", "lattice packing density phi", std::make_pair(0.7, 1.0), false};
+    if (!concave) return {title, "p", "lattice packing density phi", std::make_pair(0.7, 1.0), false};
+    double least = 1;
+    for (const PlotSeries& curve : series)
+        for (const PlotPoint& point : curve.points)
+            if (point.y && *point.y > 0) least = std::min(least, *point.y);
+    const double bottom = std::pow(10.0, std::floor(std::log10(least)));
+    return {title, "p", "lattice packing density phi (log scale)", std::make_pair(bottom, 1.0), true};
 }
 
 int run_scan(const BestCommandOptions& options) {
@@ -300,7 +309,7 @@ int run_scan(const BestCommandOptions& options) {
             if (best.status != Outcome::proved) code = exit_undecided;
         }
         if (!options.plot.empty()) {
-            plot_png(options.plot, scan_axes(values), curves.series);
+            plot_png(options.plot, scan_axes(values, curves.series), curves.series);
             std::cerr << "wrote " << options.plot << "\n";
         }
         if (code != exit_ok)

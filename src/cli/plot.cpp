@@ -101,7 +101,7 @@ std::string script(const std::string& output, const PlotAxes& axes, const std::v
     text += "set xlabel " + quoted(axes.x_label) + "\n";
     text += "set ylabel " + quoted(axes.y_label) + "\n";
     text += "set key bottom right\nset grid\n";
-    if (axes.log_y) text += "set logscale y\n";
+    if (axes.log_y) text += "set logscale y\nset format y \"%g\"\n";
     if (axes.y_range) text += "set yrange [" + number(axes.y_range->first) + ":" + number(axes.y_range->second) + "]\n";
     return text + plots + "\nunset output\n";
 }
