@@ -75,16 +75,9 @@ SearchLattice<I> check_candidate(const SearchCandidate& candidate, const Rationa
         exact = *fraction;
         scale_exponent = 0;
     } else {
+        // Below p = 1/2 too: the closed form of the star test (NOTES.md 13.5) resolves a
+        // clearance of 2^-39 at a near contact, where the box cover needed up to 2^-10.
         check = check_exact_lattice(exact, p, field);
-        // Below p = 1/2 the star-body test decides a vector only once the boxes around its near
-        // contact are small against the clearance, which 2^-39 is not within its budget: the
-        // guess is scaled up further, by 1 + 2^-k, until a scale is decided (NOTES.md 13.4).
-        for (int k : {24, 16, 10}) {
-            if (p >= Rational(1, 2) || check.verdict != Outcome::undecided) break;
-            scale_exponent = k;
-            exact = exact_scaled(candidate.basis, k);
-            check = check_exact_lattice(exact, p, field);
-        }
     }
     const I phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(exact, field)));
     return {candidate, exact, scale_exponent, std::move(check), phi};
