@@ -6,6 +6,7 @@
 #include <optional>
 #include <random>
 
+#include "superpack/problems/compass_pass.hpp"
 #include "superpack/problems/difference_gauge.hpp"
 #include "superpack/solve/approximate_inverse.hpp"
 
@@ -190,20 +191,14 @@ DoubleBasis pattern_search(DoubleBasis b, double p, std::mt19937_64& random, lon
                 }
             directions.push_back(scaled(d, 1 / std::sqrt(length)));
         }
-        bool improved = false;
-        for (const DoubleBasis& d : directions) {
-            DoubleBasis trial = b;
+        const auto moved = [step](const DoubleBasis& from, const DoubleBasis& d) {
+            DoubleBasis trial = from;
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 3; ++j) trial[i][j] += step * d[i][j];
-            const double trial_value = objective(trial, p, extra);
-            ++evaluations;
-            if (trial_value < value - 1e-15) {
-                b = trial;
-                value = trial_value;
-                improved = true;
-            }
-        }
-        if (!improved) step /= 2;
+            return trial;
+        };
+        const auto f = [&](const DoubleBasis& trial) { return objective(trial, p, extra); };
+        if (!compass_pass(b, value, directions, moved, f, evaluations)) step /= 2;
     }
     return b;
 }
