@@ -298,15 +298,17 @@ TEST_CASE("limits are stated and enforced, contradictions refused, undecided is 
     const Run scan_json = run("superdisk --scan 1:2:0.5 --csv --json");
     CHECK(scan_json.status == 2);
     CHECK(nlohmann::json::parse(scan_json.out)["error"].get<std::string>().find("not --json") != std::string::npos);
-    // Undecided answers exit 4 after printing them: the superdisk below 1/2 (nothing certified)...
+    // The superdisk below 1/2: no optimum (not applicable), a certified lattice (exit 0), one
+    // progress line.
     const Run concave = run("superdisk --p 0.3");
-    CHECK(concave.status == 4);
-    CHECK(concave.out.find("undecided") != std::string::npos);
+    CHECK(concave.status == 0);
+    CHECK(concave.out.find("certified lattice phi [") != std::string::npos);
     CHECK(lines(concave.err) == 1);
     const Run concave_json = run("superdisk --p 0.3 --json");
-    CHECK(concave_json.status == 4);
+    CHECK(concave_json.status == 0);
     CHECK(nlohmann::json::parse(concave_json.out)["status"] == "not_applicable");
-    // ... and a report with an undecided cell, after its whole table and log.
+    // Undecided answers exit 4 after printing them: a report with an undecided cell, after its
+    // whole table and log.
     const Scratch scratch;
     const Run report = run("report --p-values 0.5000000000000000001,2 --output " + scratch.path + "/report.json");
     CHECK(report.status == 4);

@@ -138,9 +138,10 @@ TEST_CASE("superdisk CLI: one JSON document with the contract's names; concave p
                 std::string(superdisk_golden()["2"]["optimal_phi"])));
     CHECK(!document["proof"]["pieces"].empty());
     const auto concave = nlohmann::json::parse(run("superdisk --p 0.3 --json", status));
-    CHECK(status == 4);  // only the area is certified: the printed lattices and optimum are undecided
+    CHECK(status == 0);  // no optimum and no Lambda lattices; the concave lattice is certified (test_star_disk)
     CHECK_FALSE(concave.contains("optimal_phi"));
     CHECK(concave["status"] == "not_applicable");
+    CHECK(concave["concave_lattice"]["status"] == "certified");
     run("superdisk --scan 1:2:0.5", status);
     CHECK(status == 2);
     const std::string csv = run("superdisk --scan 1:1.5:0.5 --csv", status);

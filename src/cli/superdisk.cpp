@@ -6,6 +6,7 @@
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/superdisk_certificate.hpp"
+#include "superpack/problems/star_disk.hpp"
 #include "superpack/problems/superdisk.hpp"
 
 namespace superpack::cli {
@@ -83,6 +84,45 @@ Json report_json(const SuperdiskReport<I>& report) {
     return document;
 }
 
+const char* const no_optimality = "no optimality claimed: Fejes Toth's theorem and the inscribed-hexagon reduction need a convex disk";
+
+// Below 1/2: the densest lattice the search certifies (problems/star_disk.hpp).
+template <class I>
+Json concave_json(const StarDiskLattice<I>& lattice) {
+    Json result{{"status", lattice.status == Outcome::proved ? "certified" : "undecided"},
+                {"reason", lattice.reason},
+                {"diamond_insertion_phi", enclosure_json(lattice.insertion_phi)},
+                {"diamond_insertion", "the square |x| + |y| <= 1 holds the disk and tiles with the lattice (1, 1), (1, -1)"},
+                {"candidates_checked", lattice.candidates_checked},
+                {"optimality", no_optimality}};
+    if (!lattice.phi) return result;
+    Json basis = Json::array();
+    for (const auto& row : lattice.basis) basis.push_back(Json::array({rational_text(row[0]), rational_text(row[1])}));
+    result["basis"] = basis;
+    result["phi"] = enclosure_json(*lattice.phi);
+    result["start"] = lattice.start;
+    return result;
+}
+
+template <class I>
+void print_concave(const StarDiskLattice<I>& lattice, int digits) {
+    auto text = [digits](const I& x) {
+        const DecimalEnclosure d = to_decimal(x, digits);
+        return "[" + d.lo + ", " + d.hi + "]";
+    };
+    std::cout << "  diamond insertion phi " << text(lattice.insertion_phi) << "  (the lattice (1, 1), (1, -1))\n";
+    if (!lattice.phi) {
+        std::cout << "  certified lattice undecided: " << lattice.reason << "\n";
+        return;
+    }
+    std::cout << "  certified lattice phi " << text(*lattice.phi) << "  (from " << lattice.start << ")\n";
+    const auto field = field_of(*lattice.phi);
+    for (int i = 0; i < 2; ++i)
+        std::cout << "  basis e" << i + 1 << "  " << text(field.rational(lattice.basis[i][0])) << ", "
+                  << text(field.rational(lattice.basis[i][1])) << "  (exact rationals in --json)\n";
+    std::cout << "  note: " << no_optimality << "\n";
+}
+
 // Measured (README): the branch and bound at p = 1.25 takes about 34 s at 1000 digits.
 constexpr long max_digits = 1000;
 // A scan computes one optimum per p, about 0.07 s each in binary64: 1000 values take a minute.
@@ -154,11 +194,29 @@ int run(const SuperdiskCliOptions& options) {
     if (options.p.empty()) throw Failure(exit_usage, "superdisk needs --p P or --scan a:b:h --csv");
     const Rational p = parse_p(options.p);
     if (!options.certificate.empty() && p <= Rational(1, 2))
-        throw Failure(exit_usage, "superdisk: no certificate for p <= 1/2 (p = 1/2 tiles; p < 1/2 is not convex)");
+        throw Failure(exit_usage, "superdisk: no certificate for p <= 1/2 (p = 1/2 tiles; below, check-lattice --p P --basis "
+                                  "\"u1,u2,0; w1,w2,0; 0,0,2\" --certificate FILE proves the plane lattice, NOTES.md 13.8)");
     if (!options.certificate.empty()) require_writable_target(options.certificate);
     require_rounding_self_test();
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         const auto report = analyse_superdisk(p, field);
+        if (p < Rational(1, 2)) {
+            std::cerr << "superdisk: p < 1/2, searching lattices of the concave disk\n";
+            const auto lattice = best_star_disk_lattice(p, field);
+            if (options.json) {
+                Json document = header_json("superdisk", field, digits);
+                document["p"] = options.p;
+                document["p_exact"] = rational_text(p);
+                document.update(report_json(report));
+                document["concave_lattice"] = concave_json(lattice);
+                print_json(document);
+            } else {
+                print_table(report, options.p, field.backend(), table_digits(digits, !options.digits.empty()));
+                print_concave(lattice, table_digits(digits, !options.digits.empty()));
+            }
+            if (lattice.status != Outcome::proved) throw Failure(exit_undecided, "superdisk: undecided: " + lattice.reason);
+            return exit_ok;
+        }
         if (!options.certificate.empty() && report.status == OptimumStatus::certified) {
             try {
                 write_certificate(options.certificate, superdisk_certificate(report, p, field, digits));
@@ -188,7 +246,8 @@ int run(const SuperdiskCliOptions& options) {
 void add_superdisk(CLI::App& app) {
     auto options = std::make_shared<SuperdiskCliOptions>();
     CLI::App* command = app.add_subcommand(
-        "superdisk", "Superdisk: the Lambda0/Lambda1 lattices and the certified optimal packing density (p >= 1/2)");
+        "superdisk", "Superdisk: the Lambda0/Lambda1 lattices and the certified optimal packing density (p >= 1/2); below 1/2 "
+        "the densest lattice packing superpack certifies (no optimality claim)");
     command->add_option("--p", options->p, std::string("deformation parameter: a decimal (1.25) or a fraction (5/4); ") + supported_p_text);
     command->add_option("--digits", options->digits,
                         "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
