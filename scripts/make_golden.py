@@ -108,7 +108,8 @@ def main():
              for p_text in ["0.3", "0.5", "0.75", "1", "1.5", "2", "7/3"]]
     document = {"generator": "scripts/make_golden.py", "mpmath_dps": mp.dps, "digits": DIGITS,
                 "families": families, "superdisk_areas": areas,
-                "constants": {"pi_over_sqrt18": text(pi / sqrt(18)), "ln3_over_ln4": text(log(3) / log(4))}}
+                "constants": {"pi_over_sqrt18": text(pi / sqrt(18)), "ln3_over_ln4": text(log(3) / log(4)),
+                              "pi_over_6": text(pi / 6), "superball_volume_p2": text(volume(mpf(2)))}}
     print(json.dumps(document, indent=1))
 
 

@@ -28,7 +28,9 @@ Rational rounded_point(const I& x, int bits) {
     mpz_ui_pow_ui(scale.get_mpz_t(), 2, bits);
     const Rational scaled = end * scale;
     mpz_fdiv_q(steps.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
-    return Rational(steps, scale);
+    Rational result(steps, scale);
+    result.canonicalize();  // GMP's arithmetic and comparisons assume lowest terms
+    return result;
 }
 
 std::string coefficients_text(const Coefficients& c) {
