@@ -1,5 +1,5 @@
 // superpack simulate --p P --n N [--steps S] [--seed K] [--init lattice|random|FAMILY] [--json]
-//                    [--xyz FILE] [--certificate FILE]
+//                    [--xyz FILE] [--mesh FILE.obj] [--png FILE.png] [--certificate FILE]
 // The paper's stochastic optimizer (sim/shrinking_cell.hpp) for N superballs per cell, and the
 // proof of the packing it ends with (problems/periodic_packing.hpp): floating point guesses,
 // intervals prove.
@@ -8,6 +8,9 @@
 
 #include "common.hpp"
 #include "packing_files.hpp"
+#include "packing_mesh.hpp"
+#include "packing_picture.hpp"
+#include "plot.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/periodic_certificate.hpp"
 #include "superpack/problems/best.hpp"
@@ -19,7 +22,7 @@ namespace superpack::cli {
 namespace {
 
 struct SimulateOptions {
-    std::string p, init = "lattice", xyz, certificate;
+    std::string p, init = "lattice", xyz, mesh, png, certificate;
     int particles = 2;
     long steps = 20000;
     unsigned long long seed = 1;
@@ -92,8 +95,9 @@ int run(const SimulateOptions& options) {
         throw Failure(exit_usage, "--pressure: 0.001 to 10^6, got " + std::to_string(*options.pressure));
     std::optional<Family> family;
     if (options.init != "lattice" && options.init != "random") family = parse_family(options.init);
-    for (const std::string* path : {&options.xyz, &options.certificate})
+    for (const std::string* path : {&options.xyz, &options.mesh, &options.certificate})
         if (!path->empty()) require_writable_target(*path);
+    if (!options.png.empty()) require_plottable(options.png);
     require_rounding_self_test();
     const DoubleField field;
     const sim::SuperballShape shape(p.get_d());
@@ -168,9 +172,11 @@ int run(const SimulateOptions& options) {
                 throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
             }
         }
-        if (!options.xyz.empty())
-            write_atomically(options.xyz, extended_xyz(proof.packing, "superpack simulate: certified phi in " +
-                                                                          to_decimal((*proof.phi), 12).lo + " .. " + to_decimal((*proof.phi), 12).hi));
+        const std::string file_comment =
+            "superpack simulate: certified phi in " + to_decimal((*proof.phi), 12).lo + " .. " + to_decimal((*proof.phi), 12).hi;
+        if (!options.xyz.empty()) write_atomically(options.xyz, extended_xyz(proof.packing, file_comment));
+        if (!options.mesh.empty()) write_atomically(options.mesh, packing_obj(proof.packing, file_comment));
+        if (!options.png.empty()) packing_png(options.png, proof.packing, *proof.phi);
     }
     if (options.json) {
         print_json(document);
@@ -211,6 +217,14 @@ void add_simulate(CLI::App& app) {
                         "it rises to 10^7 over 80% of the cycles, then only compressions are tried");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_option("--xyz", options->xyz, "write the certified packing as extended XYZ (OVITO reads its superquadric shapes)");
+    command->add_option("--mesh", options->mesh,
+                        "write the certified packing as a triangle mesh (Wavefront OBJ): each particle of the cell a closed "
+                        "surface of " + std::to_string(12 * default_mesh_resolution * default_mesh_resolution) +
+                            " triangles (a cube-sphere grid of 6 x " + std::to_string(default_mesh_resolution) + " x " +
+                            std::to_string(default_mesh_resolution) + " squares)");
+    command->add_option("--png", options->png,
+                        "draw the certified packing into a PNG (gnuplot): a 2 x 2 x 2 block of cells, each particle shaded "
+                        "in the colour of its index in the cell, the cell's edges drawn");
     command->add_option("--certificate", options->certificate, "write a periodic-packing certificate (replay it with `superpack verify FILE`)");
     command->callback([options] { run(*options); });
 }
