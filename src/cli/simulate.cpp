@@ -5,6 +5,7 @@
 // intervals prove.
 #include <chrono>
 #include <memory>
+#include <sstream>
 
 #include "common.hpp"
 #include "packing_files.hpp"
@@ -91,8 +92,11 @@ int run(const SimulateOptions& options) {
         throw Failure(exit_usage, "--n: 1 to " + std::to_string(max_particles) + " particles, got " + std::to_string(options.particles));
     if (options.steps < 1 || options.steps > max_steps)
         throw Failure(exit_usage, "--steps: 1 to " + std::to_string(max_steps) + " cycles, got " + std::to_string(options.steps));
-    if (options.pressure && !(*options.pressure >= min_pressure && *options.pressure <= max_pressure))
-        throw Failure(exit_usage, "--pressure: 0.001 to 10^6, got " + std::to_string(*options.pressure));
+    if (options.pressure && !(*options.pressure >= min_pressure && *options.pressure <= max_pressure)) {
+        std::ostringstream given;  // shortest form ("0", "2e+07"), not to_string's six decimals
+        given << *options.pressure;
+        throw Failure(exit_usage, "--pressure: 0.001 to 10^6, got " + given.str());
+    }
     std::optional<Family> family;
     if (options.init != "lattice" && options.init != "random") family = parse_family(options.init);
     for (const std::string* path : {&options.xyz, &options.mesh, &options.certificate})
@@ -131,7 +135,9 @@ int run(const SimulateOptions& options) {
         const auto now = std::chrono::steady_clock::now();
         if (now - last < std::chrono::seconds(1)) return;
         last = now;
-        std::cerr << "simulate: cycle " << progress.cycle << " / " << options.steps << "  phi ~ " << progress.phi << "\n";
+        const long percent = 100 * progress.cycle / options.steps;
+        std::cerr << "simulate: [" << std::string(static_cast<std::size_t>(percent / 5), '#') << std::string(static_cast<std::size_t>(20 - percent / 5), '.')
+                  << "] " << percent << "%, cycle " << progress.cycle << " / " << options.steps << ", phi ~ " << progress.phi << "\n";
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 
