@@ -8,14 +8,7 @@
 #include <sstream>
 
 #include "common.hpp"
-#include "packing_files.hpp"
-#include "packing_mesh.hpp"
-#include "packing_picture.hpp"
-#include "plot.hpp"
-#include "superpack/cert/atomic_file.hpp"
-#include "superpack/cert/periodic_certificate.hpp"
-#include "superpack/problems/best.hpp"
-#include "superpack/problems/periodic_packing.hpp"
+#include "final_packing.hpp"
 #include "superpack/sim/shrinking_cell.hpp"
 
 namespace superpack::cli {
@@ -23,7 +16,8 @@ namespace superpack::cli {
 namespace {
 
 struct SimulateOptions {
-    std::string p, init = "lattice", xyz, mesh, png, certificate;
+    std::string p, init = "lattice";
+    PackingFiles files;
     int particles = 2;
     long steps = 20000;
     unsigned long long seed = 1;
@@ -44,36 +38,6 @@ constexpr double random_start_phi = 0.2;
 // lattice at p = 2, N = 2, 1000 ends 0.03% below C1 and 10 ends 2% below.
 constexpr double random_start_pressure = 10, lattice_start_pressure = 1000;
 constexpr double min_pressure = 1e-3, max_pressure = 1e6;
-// Exact rounding of the end state: cell entries and fractional coordinates to multiples of
-// 2^-40, quaternion components to 2^-30 (any nonzero rational quaternion is a rotation).
-constexpr int cell_bits = 40, quaternion_bits = 30;
-
-sim::Matrix3 matrix_of(const Basis<DInterval>& basis) {
-    sim::Matrix3 rows;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) rows[i][j] = mid_double(basis[i][j]);
-    return rows;
-}
-
-PeriodicPacking exact_packing(const Rational& p, const sim::PeriodicConfiguration& state) {
-    PeriodicPacking packing;
-    packing.p = p;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) packing.cell[i][j] = dyadic_near(state.cell[i][j], cell_bits);
-    for (std::size_t n = 0; n < state.size(); ++n) {
-        RationalVector3 center;
-        std::array<Rational, 3> fraction;
-        for (int c = 0; c < 3; ++c) fraction[c] = dyadic_near(state.fractional[n][c], cell_bits);
-        for (int c = 0; c < 3; ++c)
-            center[c] = fraction[0] * packing.cell[0][c] + fraction[1] * packing.cell[1][c] + fraction[2] * packing.cell[2][c];
-        packing.centers.push_back(center);
-        const sim::Quaternion& q = state.orientations[n];
-        packing.quaternions.push_back({dyadic_near(q.w, quaternion_bits), dyadic_near(q.x, quaternion_bits),
-                                       dyadic_near(q.y, quaternion_bits), dyadic_near(q.z, quaternion_bits)});
-    }
-    return packing;
-}
-
 Json configuration_summary(const sim::ShrinkingCellResult& run, double seconds) {
     return Json{{"start_phi_estimate", run.start_phi},
                 {"phi_estimate", run.phi},
@@ -99,25 +63,21 @@ int run(const SimulateOptions& options) {
     }
     std::optional<Family> family;
     if (options.init != "lattice" && options.init != "random") family = parse_family(options.init);
-    for (const std::string* path : {&options.xyz, &options.mesh, &options.certificate})
-        if (!path->empty()) require_writable_target(*path);
-    if (!options.png.empty()) require_plottable(options.png);
+    require_packing_files(options.files);
     require_rounding_self_test();
     const DoubleField field;
     const sim::SuperballShape shape(p.get_d());
 
     // The reference: the best lattice superpack certifies at p, which also gives the lattice start.
-    std::cerr << "simulate: certifying the best lattice at p = " << options.p << " for comparison\n";
-    const BestLattice<DInterval> best = find_best_lattice(p, field, BestOptions{});
-    if (best.status != Outcome::proved) throw Failure(exit_undecided, "simulate: no certified lattice at p = " + options.p + " to compare with");
+    const BestLattice<DInterval> best = reference_lattice(p, "simulate");
     sim::PeriodicConfiguration start;
     if (family) {
         const FamilyLattice<DInterval> lattice = enclose_family(*family, p, field);
         if (lattice.status != Outcome::proved || !lattice.basis)
             throw Failure(exit_undecided, "simulate: the family " + options.init + " is not certified at p = " + options.p);
-        start = sim::lattice_configuration(matrix_of(*lattice.basis), options.particles, lattice_expansion);
+        start = lattice_start(*lattice.basis, options.particles, lattice_expansion);
     } else if (options.init == "lattice") {
-        start = sim::lattice_configuration(matrix_of(best_basis(best)), options.particles, lattice_expansion);
+        start = lattice_start(best_basis(best), options.particles, lattice_expansion);
     } else {
         sim::RandomSource random(options.seed ^ 0x9e3779b97f4a7c15ULL);
         start = sim::random_configuration(shape, options.particles, random_start_phi, random);
@@ -143,16 +103,8 @@ int run(const SimulateOptions& options) {
 
     // The proof: exact rounding, a separating plane per close pair (sim's guess), scaled if needed.
     std::cerr << "simulate: proving the final packing\n";
-    const sim::PeriodicConfiguration& end = run.configuration;
-    const NormalGuess guess = [&](std::size_t first, std::size_t second, const std::array<double, 3>& difference) {
-        const sim::Placement a{{0, 0, 0}, sim::rotation_matrix(end.orientations[first])};
-        const sim::Placement b{difference, sim::rotation_matrix(end.orientations[second])};
-        // Also for a pair GJK calls touching: its best plane is near the contact normal.
-        return sim::separation(shape, a, b).normal;
-    };
-    const PeriodicCertificate<DInterval> proof = certify_periodic_packing(exact_packing(p, end), guess, field);
+    const PeriodicCertificate<DInterval> proof = prove_end_state(p, shape, run.configuration);
     const bool certified = proof.status == Outcome::proved;
-    const DInterval& lattice_phi = best_phi(best);
 
     Json document = header_json("simulate", field, 15);
     document["p"] = options.p;
@@ -162,45 +114,15 @@ int run(const SimulateOptions& options) {
     document["init"] = options.init;
     document["simulation"] = configuration_summary(run, seconds);
     document["simulation"]["start_pressure"] = run_options.start_pressure;
-    document["certified"] = certified;
-    document["reason"] = proof.reason;
-    document["best_lattice"] = Json{{"name", best_name(best)}, {"phi", enclosure_json(lattice_phi)}};
-    if (certified) {
-        document["phi"] = enclosure_json((*proof.phi));
-        document["ratio_to_best_lattice"] = enclosure_json((*proof.phi) / lattice_phi);
-        document["scale"] = rational_text(proof.scale);
-        document["pairs_separated"] = proof.pairs.size();
-        document["configuration"] = periodic_packing_json(proof.packing);
-        if (!options.certificate.empty()) {
-            try {
-                write_certificate(options.certificate, periodic_certificate(proof, field, 15));
-            } catch (const std::runtime_error& error) {
-                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
-            }
-        }
-        const std::string file_comment =
-            "superpack simulate: certified phi in " + to_decimal((*proof.phi), 12).lo + " .. " + to_decimal((*proof.phi), 12).hi;
-        if (!options.xyz.empty()) write_atomically(options.xyz, extended_xyz(proof.packing, file_comment));
-        if (!options.mesh.empty()) write_atomically(options.mesh, packing_obj(proof.packing, file_comment));
-        if (!options.png.empty()) packing_png(options.png, proof.packing, *proof.phi);
-    }
+    add_proof_json(document, proof, best);
+    write_packing_files(options.files, proof, "simulate");
     if (options.json) {
         print_json(document);
     } else {
-        auto text = [](const DInterval& x) {
-            const DecimalEnclosure d = to_decimal(x, 17);
-            return "[" + d.lo + ", " + d.hi + "]";
-        };
         std::cout << "simulate p = " << options.p << ", " << options.particles << " particles per cell, " << options.steps
                   << " cycles from " << options.init << ", seed " << options.seed << "\n"
                   << "  optimizer phi ~ " << run.phi << " (floating point, " << seconds << " s; start ~ " << run.start_phi << ")\n";
-        if (certified) {
-            std::cout << "  certified phi  " << text((*proof.phi)) << "  (" << proof.reason << "; " << proof.pairs.size() << " pairs)\n"
-                      << "  best lattice   " << text(lattice_phi) << "  (" << best_name(best) << ")\n"
-                      << "  ratio          " << text((*proof.phi) / lattice_phi) << "\n";
-        } else {
-            std::cout << "  not certified: " << proof.reason << "\n";
-        }
+        print_proof(std::cout, proof, best);
     }
     if (!certified) throw Failure(exit_undecided, "simulate: undecided: " + proof.reason);
     return exit_ok;
@@ -222,16 +144,7 @@ void add_simulate(CLI::App& app) {
                         "the optimizer's start pressure P v_K / kT, 0.001 to 10^6 (default 10 from random, 1000 from a lattice); "
                         "it rises to 10^7 over 80% of the cycles, then only compressions are tried");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
-    command->add_option("--xyz", options->xyz, "write the certified packing as extended XYZ (OVITO reads its superquadric shapes)");
-    command->add_option("--mesh", options->mesh,
-                        "write the certified packing as a triangle mesh (Wavefront OBJ): each particle of the cell a closed "
-                        "surface of " + std::to_string(12 * default_mesh_resolution * default_mesh_resolution) +
-                            " triangles (a cube-sphere grid of 6 x " + std::to_string(default_mesh_resolution) + " x " +
-                            std::to_string(default_mesh_resolution) + " squares)");
-    command->add_option("--png", options->png,
-                        "draw the certified packing into a PNG (gnuplot): a 2 x 2 x 2 block of cells, each particle shaded "
-                        "in the colour of its index in the cell, the cell's edges drawn");
-    command->add_option("--certificate", options->certificate, "write a periodic-packing certificate (replay it with `superpack verify FILE`)");
+    add_packing_file_options(*command, options->files);
     command->callback([options] { run(*options); });
 }
 

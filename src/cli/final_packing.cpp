@@ -1,0 +1,126 @@
+#include "final_packing.hpp"
+
+#include "packing_files.hpp"
+#include "packing_mesh.hpp"
+#include "packing_picture.hpp"
+#include "plot.hpp"
+#include "superpack/cert/atomic_file.hpp"
+#include "superpack/cert/periodic_certificate.hpp"
+#include "superpack/sim/overlap.hpp"
+
+namespace superpack::cli {
+
+namespace {
+
+constexpr int cell_bits = 40, quaternion_bits = 30;
+
+PeriodicPacking exact_packing(const Rational& p, const sim::PeriodicConfiguration& state) {
+    PeriodicPacking packing;
+    packing.p = p;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) packing.cell[i][j] = dyadic_near(state.cell[i][j], cell_bits);
+    for (std::size_t n = 0; n < state.size(); ++n) {
+        RationalVector3 center;
+        std::array<Rational, 3> fraction;
+        for (int c = 0; c < 3; ++c) fraction[c] = dyadic_near(state.fractional[n][c], cell_bits);
+        for (int c = 0; c < 3; ++c)
+            center[c] = fraction[0] * packing.cell[0][c] + fraction[1] * packing.cell[1][c] + fraction[2] * packing.cell[2][c];
+        packing.centers.push_back(center);
+        const sim::Quaternion& q = state.orientations[n];
+        packing.quaternions.push_back({dyadic_near(q.w, quaternion_bits), dyadic_near(q.x, quaternion_bits),
+                                       dyadic_near(q.y, quaternion_bits), dyadic_near(q.z, quaternion_bits)});
+    }
+    return packing;
+}
+
+std::string bracketed(const DInterval& x) {
+    const DecimalEnclosure d = to_decimal(x, 17);
+    return "[" + d.lo + ", " + d.hi + "]";
+}
+
+}  // namespace
+
+void add_packing_file_options(CLI::App& command, PackingFiles& files) {
+    command.add_option("--xyz", files.xyz, "write the certified packing as extended XYZ (OVITO reads its superquadric shapes)");
+    command.add_option("--mesh", files.mesh,
+                       "write the certified packing as a triangle mesh (Wavefront OBJ): each particle of the cell a closed "
+                       "surface of " + std::to_string(12 * default_mesh_resolution * default_mesh_resolution) +
+                           " triangles (a cube-sphere grid of 6 x " + std::to_string(default_mesh_resolution) + " x " +
+                           std::to_string(default_mesh_resolution) + " squares)");
+    command.add_option("--png", files.png,
+                       "draw the certified packing into a PNG (gnuplot): a 2 x 2 x 2 block of cells, each particle shaded "
+                       "in the colour of its index in the cell, the cell's edges drawn");
+    command.add_option("--certificate", files.certificate, "write a periodic-packing certificate (replay it with `superpack verify FILE`)");
+}
+
+void require_packing_files(const PackingFiles& files) {
+    for (const std::string* path : {&files.xyz, &files.mesh, &files.certificate})
+        if (!path->empty()) require_writable_target(*path);
+    if (!files.png.empty()) require_plottable(files.png);
+}
+
+BestLattice<DInterval> reference_lattice(const Rational& p, const std::string& command) {
+    std::cerr << command << ": certifying the best lattice at p = " << decimal_or_fraction_text(p) << " for comparison\n";
+    BestLattice<DInterval> best = find_best_lattice(p, DoubleField{}, BestOptions{});
+    if (best.status != Outcome::proved)
+        throw Failure(exit_undecided, command + ": no certified lattice at p = " + decimal_or_fraction_text(p) + " to compare with");
+    return best;
+}
+
+sim::PeriodicConfiguration lattice_start(const Basis<DInterval>& basis, int particles, double expansion) {
+    sim::Matrix3 rows;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) rows[i][j] = mid_double(basis[i][j]);
+    return sim::lattice_configuration(rows, particles, expansion);
+}
+
+PeriodicCertificate<DInterval> prove_end_state(const Rational& p, const sim::SuperballShape& shape, const sim::PeriodicConfiguration& end) {
+    const NormalGuess guess = [&](std::size_t first, std::size_t second, const std::array<double, 3>& difference) {
+        const sim::Placement a{{0, 0, 0}, sim::rotation_matrix(end.orientations[first])};
+        const sim::Placement b{difference, sim::rotation_matrix(end.orientations[second])};
+        // Also for a pair GJK calls touching: its best plane is near the contact normal.
+        return sim::separation(shape, a, b).normal;
+    };
+    return certify_periodic_packing(exact_packing(p, end), guess, DoubleField{});
+}
+
+void add_proof_json(Json& document, const PeriodicCertificate<DInterval>& proof, const BestLattice<DInterval>& best) {
+    const bool certified = proof.status == Outcome::proved;
+    document["certified"] = certified;
+    document["reason"] = proof.reason;
+    document["best_lattice"] = Json{{"name", best_name(best)}, {"phi", enclosure_json(best_phi(best))}};
+    if (!certified) return;
+    document["phi"] = enclosure_json(*proof.phi);
+    document["ratio_to_best_lattice"] = enclosure_json(*proof.phi / best_phi(best));
+    document["scale"] = rational_text(proof.scale);
+    document["pairs_separated"] = proof.pairs.size();
+    document["configuration"] = periodic_packing_json(proof.packing);
+}
+
+void print_proof(std::ostream& out, const PeriodicCertificate<DInterval>& proof, const BestLattice<DInterval>& best) {
+    if (proof.status != Outcome::proved) {
+        out << "  not certified: " << proof.reason << "\n";
+        return;
+    }
+    out << "  certified phi  " << bracketed(*proof.phi) << "  (" << proof.reason << "; " << proof.pairs.size() << " pairs)\n"
+        << "  best lattice   " << bracketed(best_phi(best)) << "  (" << best_name(best) << ")\n"
+        << "  ratio          " << bracketed(*proof.phi / best_phi(best)) << "\n";
+}
+
+void write_packing_files(const PackingFiles& files, const PeriodicCertificate<DInterval>& proof, const std::string& command) {
+    if (proof.status != Outcome::proved) return;
+    if (!files.certificate.empty()) {
+        try {
+            write_certificate(files.certificate, periodic_certificate(proof, DoubleField{}, 15));
+        } catch (const std::runtime_error& error) {
+            throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
+        }
+    }
+    const DecimalEnclosure phi = to_decimal(*proof.phi, 12);
+    const std::string comment = "superpack " + command + ": certified phi in " + phi.lo + " .. " + phi.hi;
+    if (!files.xyz.empty()) write_atomically(files.xyz, extended_xyz(proof.packing, comment));
+    if (!files.mesh.empty()) write_atomically(files.mesh, packing_obj(proof.packing, comment));
+    if (!files.png.empty()) packing_png(files.png, proof.packing, *proof.phi);
+}
+
+}  // namespace superpack::cli
