@@ -75,13 +75,13 @@ constexpr long max_image_coefficient = 1000;
 // max_domain_split times (168 * 2^8); each is read under max_file_bytes, one per thread at a time.
 constexpr std::size_t max_cover_files = std::size_t{168} << 8;
 
-// The periodic-packing claim (claim_periodic_packing.cpp): at most 64 particles in the cell (the
-// producer's limit, periodic_packing.hpp), and the lattice shifts whose boxes the checker
-// enumerates for its list of close pairs, summed over the N (N + 1) / 2 pairs of particles and
-// counted before any is enumerated (about 0.1 us each). A cube cell of side 9.5 holding 64
-// superballs at p = 2 needs about 125 per pair, 2.6e5 in all; the producer refuses more than
-// 10^6 for one pair.
-constexpr std::size_t max_periodic_particles = 64;
+// The periodic-packing claim (claim_periodic_packing.cpp): at most 256 particles in the cell
+// (the producer's limit, periodic_packing.hpp: molecular dynamics jams a few hundred), and the
+// lattice shifts whose boxes the checker enumerates for its list of close pairs, summed over the
+// N (N + 1) / 2 pairs of particles and counted before any is enumerated (about 0.1 us each). A
+// cube cell of side 12.4 holding 256 superballs at p = 2 and phi = 0.87 needs about 125 per
+// pair, 4.1e6 in all; the producer refuses more than 10^6 for one pair.
+constexpr std::size_t max_periodic_particles = 256;
 constexpr long max_periodic_shifts = 1L << 24;
 
 }  // namespace superpack_checker

@@ -296,8 +296,8 @@ TEST_CASE("periodic-packing: pairs out of canonical form, out of range or twice,
     empty["claim"]["data"]["particles"] = Document::array();
     CHECK(malformed_at(empty) == "claim.data.particles");
     Document many = original;
-    for (int i = 0; i < 63; ++i) many["claim"]["data"]["particles"].push_back(many["claim"]["data"]["particles"][0]);
-    CHECK(malformed_at(many) == "claim.data.particles");  // 65 > max_periodic_particles
+    for (int i = 0; i < 255; ++i) many["claim"]["data"]["particles"].push_back(many["claim"]["data"]["particles"][0]);
+    CHECK(malformed_at(many) == "claim.data.particles");  // 257 > max_periodic_particles
     // 1/100 Z^3 at r = 1: 401^3 shifts in the box, refused before any is enumerated.
     Document thin = document(balls());
     thin["claim"]["data"]["cell"] = {{"1/100", "0", "0"}, {"0", "1/100", "0"}, {"0", "0", "1/100"}};

@@ -61,7 +61,7 @@ struct PeriodicCertificate {
 using NormalGuess = std::function<std::array<double, 3>(std::size_t first, std::size_t second, const std::array<double, 3>& difference)>;
 
 // The limits of the certification, enforced: particles, and candidate shifts per pair.
-constexpr std::size_t max_periodic_particles = 64;
+constexpr std::size_t max_periodic_particles = 256;
 constexpr long max_shifts_per_pair = 1000000;
 
 // R(q) exactly.
