@@ -1,0 +1,383 @@
+#include "superpack/sim/event_md.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "superpack/sim/periodic_images.hpp"
+
+namespace superpack::sim {
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+Vector3 to_vector(const std::array<int, 3>& k) { return {double(k[0]), double(k[1]), double(k[2])}; }
+
+// The shortest nonzero vector of the lattice with basis rows `cell`.
+double shortest_lattice_vector(const Matrix3& cell) {
+    double shortest = std::min({norm(cell[0]), norm(cell[1]), norm(cell[2])});
+    for (const auto& k : image_shifts(cell, {0, 0, 0}, shortest * (1 + 1e-9))) {
+        if (k == std::array<int, 3>{0, 0, 0}) continue;
+        shortest = std::min(shortest, norm(row_combination(cell, to_vector(k))));
+    }
+    return shortest;
+}
+
+// The scale at which c + s R_a K and c + d + s R_b K start to overlap, by bisection between
+// bounds from the circumradius and the inradius: the largest s found not to overlap.
+double critical_scale(const SuperballShape& shape, const Matrix3& rotation_a, const Matrix3& rotation_b, const Vector3& d) {
+    const double length = norm(d);
+    if (shape.p() == 1) return length / 2;
+    double low = length / (2 * shape.circumradius()), high = length / (2 * shape.inradius());
+    const Placement first{{0, 0, 0}, rotation_a};
+    for (int step = 0; step < 200 && high - low > 1e-13 * high; ++step) {
+        const double middle = 0.5 * (low + high);
+        if (overlapping(shape, first, Placement{(1 / middle) * d, rotation_b})) high = middle;
+        else low = middle;
+    }
+    return low;
+}
+
+struct Particle {
+    Vector3 position{};  // Cartesian, at `time`
+    double time = 0;
+    Quaternion orientation;
+    Vector3 velocity{}, angular_velocity{};
+    long counter = 0;  // collisions (and rescalings) so far: an event predicted before is stale
+};
+
+struct Event {
+    double time = infinity;
+    int partner = -1;   // -1: re-predict
+    Vector3 offset{};   // added to the partner's position: the image it meets
+    long partner_counter = 0;
+};
+
+// The earliest of N event times: a tournament tree, ties to the lower index (deterministic).
+class EventTree {
+public:
+    explicit EventTree(int n) : times_(n, infinity) {
+        while (size_ < n) size_ *= 2;
+        tree_.assign(2 * size_, -1);
+        for (int i = 0; i < n; ++i) tree_[size_ + i] = i;
+        for (int node = size_ - 1; node >= 1; --node) tree_[node] = better(tree_[2 * node], tree_[2 * node + 1]);
+    }
+    void set(int i, double time) {
+        times_[i] = time;
+        for (int node = (size_ + i) / 2; node >= 1; node /= 2) tree_[node] = better(tree_[2 * node], tree_[2 * node + 1]);
+    }
+    int top() const { return tree_[1]; }
+
+private:
+    int better(int a, int b) const {
+        if (a < 0) return b;
+        if (b < 0) return a;
+        return times_[b] < times_[a] ? b : a;
+    }
+    int size_ = 1;
+    std::vector<double> times_;
+    std::vector<int> tree_;
+};
+
+class Simulation {
+public:
+    Simulation(const SuperballShape& shape, const PeriodicConfiguration& start, const EventMdOptions& options)
+        : shape_(shape), options_(options), tree_(static_cast<int>(start.size())) {
+        n_ = static_cast<int>(start.size());
+        if (n_ < 2) throw std::invalid_argument("run_event_md: needs at least two particles");
+        if (!(options.growth_rate >= 0) || !std::isfinite(options.growth_rate))
+            throw std::invalid_argument("run_event_md: needs a finite growth rate >= 0");
+        ball_ = shape.p() == 1;
+        radius_ = shape.circumradius();
+        k_ = inertia_factor(shape.p());
+        G_ = options.growth_rate;
+        cell_ = start.cell;
+        inverse_ = inverse(cell_);
+        for (int m = 0; m < 3; ++m) column_norm_[m] = std::hypot(inverse_[0][m], inverse_[1][m], inverse_[2][m]);
+        image_scale_ = shortest_lattice_vector(cell_) / (2 * radius_);
+        const double free_scale = largest_free_scale(shape, start);
+        a0_ = options.initial_scale > 0 ? options.initial_scale : 0.99 * free_scale;
+        if (!(a0_ < free_scale))
+            throw std::invalid_argument("run_event_md: the bodies overlap at the initial scale " + std::to_string(a0_) +
+                                        " (largest free scale " + std::to_string(free_scale) + ")");
+        if (!(a0_ < image_scale_))
+            throw std::invalid_argument("run_event_md: the cell is too small: a body could meet its own image at the initial scale");
+        horizon_ = options.horizon > 0 ? options.horizon : a0_ * radius_ / (2 * std::sqrt(3.0));
+        window_ = options.window > 0 ? options.window : n_;
+        degrees_ = 3.0 * n_ - 3 + (ball_ ? 0.0 : 3.0 * n_);
+
+        RandomSource random(options.seed);
+        const auto gaussian = [&random] {
+            const double u = random.uniform(), v = random.uniform();
+            return std::sqrt(-2 * std::log1p(-u)) * std::cos(2 * M_PI * v);
+        };
+        particles_.resize(n_);
+        events_.assign(n_, Event{});
+        Vector3 momentum{0, 0, 0};
+        for (int i = 0; i < n_; ++i) {
+            Particle& particle = particles_[i];
+            particle.position = start.center(i);
+            particle.orientation = normalized(start.orientations[i]);
+            particle.velocity = {gaussian(), gaussian(), gaussian()};
+            const double spread = 1 / std::sqrt(k_ * a0_ * a0_);
+            if (!ball_) particle.angular_velocity = {spread * gaussian(), spread * gaussian(), spread * gaussian()};
+            momentum = momentum + particle.velocity;
+        }
+        for (Particle& particle : particles_) particle.velocity = particle.velocity - (1.0 / n_) * momentum;
+        rescale(std::sqrt(1 / temperature(0)));
+    }
+
+    EventMdResult run(const std::function<void(const EventMdProgress&)>& progress) {
+        EventMdResult result;
+        result.initial_scale = a0_;
+        result.initial_energy = kinetic_energy(0);
+        for (int i = 0; i < n_; ++i) predict(i, 0);
+        // Stop before a body could meet its own image (the loop never pairs a body with it).
+        const double image_time = G_ > 0 ? (image_scale_ * (1 - 1e-9) - a0_) / G_ : infinity;
+        const double stop_time = std::min(options_.max_time, image_time);
+        double now = 0, window_start = 0, window_temperature = 1, virial = 0;
+        long window_collisions = 0;
+        for (;;) {
+            const int i = tree_.top();
+            const Event event = events_[i];
+            if (event.time > stop_time) {
+                now = stop_time;
+                (options_.max_time <= image_time ? result.time_limit : result.image_limit) = true;
+                break;
+            }
+            now = event.time;
+            ++result.events;
+            if (event.partner < 0 || particles_[event.partner].counter != event.partner_counter) {
+                predict(i, now);
+                continue;
+            }
+            virial += collide(i, event);
+            ++result.collisions;
+            if (progress && result.collisions % 1000 == 0)
+                progress({result.collisions, now, scale(now), phi(now), result.pressure});
+            if (result.collisions >= options_.max_collisions) {
+                result.collision_limit = true;
+                break;
+            }
+            if (++window_collisions < window_) continue;
+            // The window's pressure and collision rate; then the thermostat.
+            const double span = now - window_start, end_temperature = temperature(now);
+            result.pressure = span > 0 ? 1 + virial / (3 * n_ * 0.5 * (window_temperature + end_temperature) * span) : infinity;
+            const double rate = span > 0 ? window_collisions / (n_ * span) : infinity;
+            if (options_.pressure_limit > 0 && result.pressure > options_.pressure_limit) result.jammed_pressure = true;
+            else if (options_.collision_rate_limit > 0 && rate > options_.collision_rate_limit) result.jammed_rate = true;
+            if (result.jammed_pressure || result.jammed_rate) break;
+            if (G_ > 0) {
+                for (int j = 0; j < n_; ++j) synchronise(j, now);
+                rescale(std::sqrt(1 / end_temperature));
+                for (Particle& particle : particles_) ++particle.counter;
+                for (int j = 0; j < n_; ++j) predict(j, now);
+                ++result.rescalings;
+                window_temperature = 1;
+            } else {
+                window_temperature = end_temperature;
+            }
+            virial = 0;
+            window_start = now;
+            window_collisions = 0;
+        }
+        for (int j = 0; j < n_; ++j) synchronise(j, now);
+        result.time = now;
+        result.scale = scale(now);
+        result.phi = phi(now);
+        result.temperature = temperature(now);
+        result.final_energy = kinetic_energy(now);
+        result.predictions = predictions_;
+        result.capped_predictions = capped_;
+        result.advancement_steps = iterations_;
+        PeriodicConfiguration& end = result.configuration;
+        for (int m = 0; m < 3; ++m) end.cell[m] = (1 / result.scale) * cell_[m];
+        for (const Particle& particle : particles_) {
+            Vector3 f = apply_transpose(inverse_, particle.position);
+            for (double& x : f) {
+                x -= std::floor(x);
+                if (!(x < 1)) x = 0;
+            }
+            end.fractional.push_back(f);
+            end.orientations.push_back(particle.orientation);
+        }
+        return result;
+    }
+
+private:
+    double scale(double t) const { return a0_ + G_ * t; }
+    double phi(double t) const { return n_ * superball_volume(shape_.p()) * std::pow(scale(t), 3) / std::fabs(determinant(cell_)); }
+
+    double kinetic_energy(double t) const {
+        const double inertia = k_ * scale(t) * scale(t);
+        double energy = 0;
+        for (const Particle& particle : particles_)
+            energy += 0.5 * dot(particle.velocity, particle.velocity) + 0.5 * inertia * dot(particle.angular_velocity, particle.angular_velocity);
+        return energy;
+    }
+    double temperature(double t) const { return 2 * kinetic_energy(t) / degrees_; }
+
+    void rescale(double factor) {
+        for (Particle& particle : particles_) {
+            particle.velocity = factor * particle.velocity;
+            particle.angular_velocity = factor * particle.angular_velocity;
+        }
+    }
+
+    MovingBody body_at(int i, double t) const {
+        const Particle& particle = particles_[i];
+        return advance(MovingBody{particle.position, particle.orientation, particle.velocity, particle.angular_velocity}, t - particle.time);
+    }
+
+    void synchronise(int i, double t) {
+        const MovingBody body = body_at(i, t);
+        Particle& particle = particles_[i];
+        particle.position = body.center;
+        particle.orientation = body.orientation;
+        particle.time = t;
+    }
+
+    // Particle i's earliest event from time t: the first contact with any image of any other
+    // particle within the horizon (searched only up to the best found so far), or a
+    // re-prediction at the horizon (or where a capped prediction stopped).
+    void predict(int i, double t) {
+        Event best;
+        best.time = t + horizon_;
+        const double a = scale(t), largest = scale(t + horizon_);
+        const MovingBody self = body_at(i, t);
+        const MovingBody first{{0, 0, 0}, self.orientation, self.velocity, self.angular_velocity};
+        for (int j = 0; j < n_; ++j) {
+            if (j == i) continue;
+            const Particle& other = particles_[j];
+            const Vector3 delta = other.position + (t - other.time) * other.velocity - self.center;
+            // Bounding spheres (radius a R_c) that cannot meet within the horizon are skipped:
+            // an image x = delta + k B within `cutoff` has fractional coordinates f + k with
+            // |f_m + k_m| <= |column m of B^-1| cutoff, a box of k that is usually empty.
+            const double cutoff = norm(other.velocity - self.velocity) * horizon_ + 2 * largest * radius_;
+            const Vector3 f = apply_transpose(inverse_, delta);
+            std::array<int, 3> low{}, high{};
+            bool empty = false;
+            for (int m = 0; m < 3; ++m) {
+                low[m] = static_cast<int>(std::ceil(-f[m] - column_norm_[m] * cutoff));
+                high[m] = static_cast<int>(std::floor(-f[m] + column_norm_[m] * cutoff));
+                empty = empty || low[m] > high[m];
+            }
+            if (empty) continue;
+            bool moved = false;
+            MovingBody second;
+            for (int k0 = low[0]; k0 <= high[0]; ++k0)
+                for (int k1 = low[1]; k1 <= high[1]; ++k1)
+                    for (int k2 = low[2]; k2 <= high[2]; ++k2) {
+                        const Vector3 offset = row_combination(cell_, Vector3{double(k0), double(k1), double(k2)});
+                        const Vector3 image = delta + offset;
+                        if (!(norm(image) < cutoff)) continue;
+                        if (!moved) {
+                            second = body_at(j, t);
+                            moved = true;
+                        }
+                        second.center = image;
+                        ++predictions_;
+                        const ContactPrediction prediction =
+                            first_contact(shape_, first, second, a, G_, std::min(horizon_, best.time - t), options_.contact);
+                        iterations_ += prediction.iterations;
+                        if (prediction.outcome == ContactOutcome::none || !(t + prediction.time < best.time)) continue;
+                        best.time = t + prediction.time;
+                        if (prediction.outcome == ContactOutcome::capped) {
+                            ++capped_;
+                            best.partner = -1;
+                        } else {
+                            best.partner = j;
+                            best.offset = offset;
+                            best.partner_counter = other.counter;
+                        }
+                    }
+        }
+        events_[i] = best;
+        tree_.set(i, best.time);
+    }
+
+    // The collision of i with the partner's image of `event`: both bodies advanced, the impulse
+    // applied, both wrapped into the cell and re-predicted. Returns the virial term.
+    double collide(int i, const Event& event) {
+        const int j = event.partner;
+        const double t = event.time, a = scale(t);
+        synchronise(i, t);
+        synchronise(j, t);
+        Particle &first = particles_[i], &second = particles_[j];
+        MovingBody body_i{{0, 0, 0}, first.orientation, first.velocity, first.angular_velocity};
+        MovingBody body_j{second.position + event.offset - first.position, second.orientation, second.velocity, second.angular_velocity};
+        const Contact touching = contact(shape_, body_i, body_j, a);
+        double virial = 0;
+        if (normal_gap_rate(body_i, body_j, a, G_, touching) < 0) {
+            const CollisionResponse response = sim::collide(k_, a, G_, touching, body_i, body_j);
+            virial = response.impulse * dot(touching.normal, body_j.center);
+            first.velocity = body_i.velocity;
+            first.angular_velocity = body_i.angular_velocity;
+            second.velocity = body_j.velocity;
+            second.angular_velocity = body_j.angular_velocity;
+        }
+        for (Particle* particle : {&first, &second}) {
+            ++particle->counter;
+            Vector3 f = apply_transpose(inverse_, particle->position);
+            for (double& x : f) x -= std::floor(x);
+            particle->position = row_combination(cell_, f);
+        }
+        predict(i, t);
+        predict(j, t);
+        return virial;
+    }
+
+    const SuperballShape& shape_;
+    EventMdOptions options_;
+    int n_ = 0;
+    bool ball_ = false;
+    double radius_ = 1, k_ = 0.4, G_ = 0, a0_ = 1, horizon_ = 1, image_scale_ = infinity, degrees_ = 1;
+    long window_ = 1;
+    Matrix3 cell_{}, inverse_{};
+    Vector3 column_norm_{};
+    std::vector<Particle> particles_;
+    std::vector<Event> events_;
+    EventTree tree_;
+    long predictions_ = 0, capped_ = 0, iterations_ = 0;
+};
+
+}  // namespace
+
+double largest_free_scale(const SuperballShape& shape, const PeriodicConfiguration& configuration) {
+    const std::size_t n = configuration.size();
+    const double radius = shape.circumradius(), inner = shape.inradius();
+    // An upper bound: bodies whose centres are closer than 2 a r_in overlap.
+    double upper = shortest_lattice_vector(configuration.cell) / (2 * inner);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) upper = std::min(upper, norm(nearest_difference(configuration, i, j)) / (2 * inner));
+    // Only pairs with |d| < 2 R_c upper can have a critical scale below it.
+    double best = upper;
+    std::vector<Matrix3> rotations;
+    for (std::size_t i = 0; i < n; ++i) rotations.push_back(rotation_matrix(configuration.orientations[i]));
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i; j < n; ++j) {
+            const Vector3 difference = i == j ? Vector3{0, 0, 0} : nearest_difference(configuration, i, j);
+            for (const auto& k : image_shifts(configuration.cell, difference, 2 * radius * best)) {
+                if (i == j && k == std::array<int, 3>{0, 0, 0}) continue;
+                const Vector3 d = difference + row_combination(configuration.cell, to_vector(k));
+                if (!(norm(d) / (2 * radius) < best)) continue;
+                // A body and its image are translates: they meet iff d in a (K - K) = 2 a R K.
+                const double critical = i == j ? shape.gauge(apply_transpose(rotations[i], d)) / 2 : critical_scale(shape, rotations[i], rotations[j], d);
+                best = std::min(best, critical);
+            }
+        }
+    return best;
+}
+
+EventMdResult run_event_md(const SuperballShape& shape, const PeriodicConfiguration& start, const EventMdOptions& options,
+                           const std::function<void(const EventMdProgress&)>& progress) {
+    Simulation simulation(shape, start, options);
+    return simulation.run(progress);
+}
+
+}  // namespace superpack::sim
