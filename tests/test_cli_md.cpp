@@ -41,7 +41,7 @@ TEST_CASE("md: bad usage is one line on stderr and exit 2, before any computatio
         {"--p 1 --growth 2", "--growth: 1e-7 to 1"},
         {"--p 1 --max-collisions 0", "--max-collisions: 1 to 10^9"},
         {"--p 1 --pressure-limit 1", "--pressure-limit: 10 to 10^9"},
-        {"--p 1 --cell deforming", "only 'fixed'"},
+        {"--p 1 --cell sliding", "--cell: fixed or deforming"},
         {"--p 1 --init C9", "unknown family 'C9'"},
         {"--p 1 --certificate " + empty.path + "/missing/md.json", "does not exist"},
     };

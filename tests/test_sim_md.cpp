@@ -103,3 +103,27 @@ TEST_CASE("largest_free_scale finds the scale of first contact and run_event_md 
     options.initial_scale = 0.6;
     CHECK_THROWS_AS(run_event_md(ball, pair, options), std::invalid_argument);
 }
+
+TEST_CASE("event-driven MD in a deforming cell changes the cell's shape at fixed volume and ends free of overlaps") {
+    const SuperballShape shape(2);
+    // Cube-aligned FCC, 8 bodies, grown from 0.9 of their largest free scale.
+    const PeriodicConfiguration start = lattice_configuration({Vector3{1, 1, 0}, Vector3{1, 0, 1}, Vector3{0, 1, 1}}, 8, 1);
+    EventMdOptions options;
+    options.growth_rate = 0.05;
+    options.initial_scale = 0.9 * largest_free_scale(shape, start);
+    options.max_collisions = 3000;
+    options.cell_moves = 10;
+    const EventMdResult result = run_event_md(shape, start, options);
+    INFO("a " << result.initial_scale << " -> " << result.scale << ", phi " << result.phi << ", cell moves kept "
+              << result.cell_moves_kept);
+    CHECK(result.cell_moves_kept > 0);
+    CHECK_FALSE(same_state(result.configuration, start));
+    // The end state is at unit scale: its cell times a has the start's volume.
+    const double volume = std::fabs(determinant(result.configuration.cell)) * std::pow(result.scale, 3);
+    CHECK(volume == Approx(std::fabs(determinant(start.cell))).epsilon(1e-9));
+    Matrix3 scaled = result.configuration.cell;
+    for (Vector3& row : scaled) row = result.scale * row;
+    CHECK(scaled != start.cell);  // the shape moved
+    CHECK_FALSE(any_overlap(shape, result.configuration));
+    CHECK(result.phi == Approx(density(shape, result.configuration)).epsilon(1e-12));
+}

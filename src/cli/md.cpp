@@ -1,4 +1,4 @@
-// superpack md --p P --n N --growth G [--seed K] [--init random|fcc|FAMILY] [--cell fixed]
+// superpack md --p P --n N --growth G [--seed K] [--init random|fcc|FAMILY] [--cell fixed|deforming]
 //              [--max-collisions C] [--pressure-limit L] [--json] [--xyz FILE] [--mesh FILE.obj]
 //              [--png FILE.png] [--certificate FILE]
 // Event-driven molecular dynamics of growing superballs (Donev, Torquato & Stillinger;
@@ -38,6 +38,8 @@ constexpr double min_pressure_limit = 10, max_pressure_limit = 1e9;
 // its bodies grow from this fraction of the largest scale at which they fit.
 constexpr double random_start_phi = 0.1;
 constexpr double lattice_start_fraction = 0.9;
+// The deforming cell's strain trials per window of N collisions (sim/event_md.hpp).
+constexpr int cell_moves_per_window = 10;
 
 std::string shortest(double x) {
     std::ostringstream text;
@@ -69,6 +71,7 @@ Json run_summary(const sim::EventMdResult& run, double seconds) {
                 {"initial_energy", run.initial_energy},
                 {"final_energy", run.final_energy},
                 {"rescalings", run.rescalings},
+                {"cell_moves_kept", run.cell_moves_kept},
                 {"capped_predictions", run.capped_predictions},
                 {"seconds", seconds},
                 {"note", "floating-point estimates of the dynamics; the certified phi is below"}};
@@ -87,8 +90,8 @@ int run(const MdOptions& options) {
         throw Failure(exit_usage, "--max-collisions: 1 to 10^9, got " + std::to_string(options.max_collisions));
     if (!(options.pressure_limit >= min_pressure_limit && options.pressure_limit <= max_pressure_limit))
         throw Failure(exit_usage, "--pressure-limit: 10 to 10^9, got " + shortest(options.pressure_limit));
-    if (options.cell != "fixed")
-        throw Failure(exit_usage, "--cell: only 'fixed' is built (a deforming cell is not, NOTES 15), got '" + options.cell + "'");
+    if (options.cell != "fixed" && options.cell != "deforming")
+        throw Failure(exit_usage, "--cell: fixed or deforming, got '" + options.cell + "'");
     std::optional<Family> family;
     if (options.init != "random" && options.init != "fcc") family = parse_family(options.init);
     require_packing_files(options.files);
@@ -103,6 +106,7 @@ int run(const MdOptions& options) {
     run_options.growth_rate = options.growth;
     run_options.max_collisions = options.max_collisions;
     run_options.pressure_limit = options.pressure_limit;
+    if (options.cell == "deforming") run_options.cell_moves = cell_moves_per_window;
     if (options.init == "random") {
         sim::RandomSource random(options.seed ^ 0x9e3779b97f4a7c15ULL);
         start = sim::random_configuration(shape, options.particles, random_start_phi, random);
@@ -177,7 +181,9 @@ void add_md(CLI::App& app) {
     command->add_option("--init", options->init,
                         "start: random (density 0.1; default), fcc (cube-aligned FCC), or a family C0, C1, O0, O1, D14, S6; a lattice "
                         "start grows from 0.9 of its largest free scale (unsaturated)");
-    command->add_option("--cell", options->cell, "fixed (the only cell built: a deforming cell is not)");
+    command->add_option("--cell", options->cell,
+                        "fixed (default) or deforming: after every N collisions, 10 trials of a random strain of the cell at "
+                        "fixed volume, kept when nothing overlaps (the cell takes the shape of a denser crystal)");
     command->add_option("--max-collisions", options->max_collisions, "stop after this many collisions, 1 to 10^9 (default 2 10^7)");
     command->add_option("--pressure-limit", options->pressure_limit,
                         "jammed when the reduced pressure P V / (N kT) of a window passes this, 10 to 10^9 (default 10^6)");

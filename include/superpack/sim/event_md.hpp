@@ -48,6 +48,12 @@ struct EventMdOptions {
     long window = 0;
     // Prediction horizon (time); 0: a0 R_c / (2 sqrt 3), about a quarter of a radius at thermal speed.
     double horizon = 0;
+    // A deforming cell: after every window, this many trials of a random symmetric strain of the
+    // cell at fixed volume (fractional coordinates kept, velocities unchanged), each
+    // kept when no two bodies overlap at the current scale; 0: the cell stays fixed. A
+    // substitute for DTS's deforming boundary (NOTES 15): it lets the cell take the shape of a
+    // denser crystal, such as C1 from an FCC start, while growth compresses.
+    int cell_moves = 0;
     ContactOptions contact;
 };
 
@@ -73,6 +79,7 @@ struct EventMdResult {
     long capped_predictions = 0;  // predictions stopped by the Zeno cap
     long advancement_steps = 0;   // distance evaluations (GJK runs unless p = 1) in all predictions
     long rescalings = 0;
+    long cell_moves_kept = 0;     // deforming cell: strains kept (of cell_moves per window)
     // Why it stopped (exactly one is set): pressure or collision rate over its limit (jammed),
     // max_collisions, max_time, or the scale at which a body could meet its own image (half the
     // shortest lattice vector over R_c), where the event loop, which never pairs a body with its
