@@ -88,3 +88,11 @@ TEST_CASE("md: a superball run writes a certificate the checker accepts, and the
     const nlohmann::json other = certified_document(run("md --p 1.5 --n 8 --growth 0.1 --json --seed 4"));
     CHECK(other.at("configuration") != first.at("configuration"));
 }
+
+TEST_CASE("md at p = 1/2: the octahedra's face contacts stall the dynamics, which says so instead of calling it jammed") {
+    const nlohmann::json document = certified_document(run("md --p 1/2 --n 32 --growth 0.1 --json"));
+    const nlohmann::json& dynamics = document.at("dynamics");
+    CHECK_FALSE(dynamics.at("jammed").get<bool>());
+    CHECK(dynamics.at("stopped_by").get<std::string>().find("stalled") == 0);
+    CHECK(upper(document.at("phi")) < 0.5);  // far from any jammed density: a loose, proved packing
+}

@@ -59,6 +59,7 @@ Json run_summary(const sim::EventMdResult& run, double seconds) {
                       : run.jammed_rate   ? "jammed: the collision rate passed its limit"
                       : run.collision_limit ? "the collision limit"
                       : run.time_limit      ? "the time limit"
+                      : run.stalled         ? "stalled: N collisions in no time (contacts that do not resolve, as on the octahedron's faces)"
                                             : "a body could meet its own image (the cell is too small for it)";
     return Json{{"phi_estimate", run.phi},
                 {"initial_scale", run.initial_scale},

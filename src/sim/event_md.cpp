@@ -168,6 +168,13 @@ public:
             if (++window_collisions < window_) continue;
             // The window's pressure and collision rate; then the thermostat.
             const double span = now - window_start, end_temperature = temperature(now);
+            // N collisions at one instant are no jamming: contacts that do not resolve (flat
+            // faces and sharp edges at p = 1/2, where an impulse at one point of a face leaves
+            // another closing).
+            if (!(span > 0)) {
+                result.stalled = true;
+                break;
+            }
             result.pressure = span > 0 ? 1 + virial / (3 * n_ * 0.5 * (window_temperature + end_temperature) * span) : infinity;
             const double rate = span > 0 ? window_collisions / (n_ * span) : infinity;
             if (options_.pressure_limit > 0 && result.pressure > options_.pressure_limit) result.jammed_pressure = true;

@@ -83,8 +83,10 @@ struct EventMdResult {
     // Why it stopped (exactly one is set): pressure or collision rate over its limit (jammed),
     // max_collisions, max_time, or the scale at which a body could meet its own image (half the
     // shortest lattice vector over R_c), where the event loop, which never pairs a body with its
-    // own image, stops.
-    bool jammed_pressure = false, jammed_rate = false, collision_limit = false, time_limit = false, image_limit = false;
+    // own image, stops; or stalled.
+    // `stalled`: a whole window of collisions took no time (contacts that do not resolve).
+    bool jammed_pressure = false, jammed_rate = false, collision_limit = false, time_limit = false, image_limit = false,
+         stalled = false;
 };
 
 // The largest a at which the bodies c_i + a R(q_i) K of `configuration` do not overlap (any two,
