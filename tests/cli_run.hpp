@@ -1,12 +1,16 @@
 // Running the superpack binary as a user does, for the tests of the command line: the exit
 // status, stdout and stderr of one command.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <stdlib.h>
 #include <sys/wait.h>
@@ -42,6 +46,26 @@ inline Run run(const std::string& arguments, const std::string& directory = "", 
     result.err.assign(std::istreambuf_iterator<char>(err), {});
     std::remove(err_path.c_str());
     return result;
+}
+
+// Each case (arguments, a piece of the message): `command arguments`, with and without --json,
+// exits 2 with one line on stderr holding the piece, before the work starts (no "certifying"
+// on stderr: simulate and md say that first), with stdout empty, or with --json one document
+// whose "exit" is 2.
+inline void check_refused_before_work(const std::string& command, const std::vector<std::pair<std::string, std::string>>& cases) {
+    for (const auto& [arguments, needle] : cases) {
+        for (const std::string json : {"", " --json"}) {
+            INFO(command + " " + arguments + json);
+            const Run result = run(command + " " + arguments + json);
+            INFO(result.err);
+            CHECK(result.status == 2);
+            CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+            CHECK(result.err.find(needle) != std::string::npos);
+            CHECK(result.err.find("certifying") == std::string::npos);
+            if (json.empty()) CHECK(result.out.empty());
+            else CHECK(nlohmann::json::parse(result.out, nullptr, false).value("exit", -1) == 2);
+        }
+    }
 }
 
 }  // namespace superpack::test

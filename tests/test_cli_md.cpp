@@ -45,19 +45,7 @@ TEST_CASE("md: bad usage is one line on stderr and exit 2, before any computatio
         {"--p 1 --init C9", "unknown family 'C9'"},
         {"--p 1 --certificate " + empty.path + "/missing/md.json", "does not exist"},
     };
-    for (const auto& [arguments, needle] : cases) {
-        for (const std::string json : {"", " --json"}) {
-            INFO(arguments + json);
-            const Run result = run("md " + arguments + json);
-            INFO(result.err);
-            CHECK(result.status == 2);
-            CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
-            CHECK(result.err.find(needle) != std::string::npos);
-            CHECK(result.err.find("certifying") == std::string::npos);  // the run never started
-            if (json.empty()) CHECK(result.out.empty());
-            else CHECK(nlohmann::json::parse(result.out, nullptr, false).value("exit", 0) == 2);
-        }
-    }
+    superpack::test::check_refused_before_work("md", cases);
 }
 
 TEST_CASE("md --json: jammed spheres, certified, denser than random loose packing and below FCC") {

@@ -131,23 +131,7 @@ TEST_CASE("simulate: bad usage is one line on stderr and exit 2, before any comp
         {"--p 2 --mesh " + empty.path + "/missing/packing.obj", "does not exist"},
         {"--p 2 --png " + empty.path + "/missing/packing.png", "does not exist"},
     };
-    for (const auto& [arguments, needle] : cases) {
-        for (const std::string json : {"", " --json"}) {
-            INFO(arguments + json);
-            const Run result = run("simulate " + arguments + json);
-            INFO(result.err);
-            CHECK(result.status == 2);
-            CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
-            CHECK(result.err.find(needle) != std::string::npos);
-            CHECK(result.err.find("certifying") == std::string::npos);  // the run never started
-            if (json.empty()) {
-                CHECK(result.out.empty());
-            } else {
-                const nlohmann::json document = nlohmann::json::parse(result.out, nullptr, false);
-                CHECK(document.value("exit", -1) == 2);
-            }
-        }
-    }
+    superpack::test::check_refused_before_work("simulate", cases);
     CHECK(entries(empty.path).empty());
     // --png runs gnuplot first: without it, the long run does not start.
     const Run missing = run("simulate --p 2 --png packing.png", empty.path, "PATH=" + empty.path);
