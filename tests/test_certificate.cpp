@@ -7,7 +7,7 @@
 
 #include "checker/verifier.hpp"
 #include "superpack/cert/certificate.hpp"
-#include "superpack/cert/dyadic_text.hpp"
+#include "superpack/arith/exact_ends.hpp"
 #include "superpack/cert/family_certificate.hpp"
 #include "superpack/cert/lattice_certificate.hpp"
 #include "support.hpp"

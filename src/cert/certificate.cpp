@@ -5,39 +5,19 @@
 
 #include "checker/verifier.hpp"
 #include "superpack/arith/decimal.hpp"
+#include "superpack/arith/exact_ends.hpp"
 #include "superpack/arith/self_test.hpp"
 #include "superpack/cert/atomic_file.hpp"
-#include "superpack/cert/dyadic_text.hpp"
 
 namespace superpack {
-
-std::string dyadic_text(const mpfr_t x) {
-    if (mpfr_zero_p(x)) return "0";
-    if (!mpfr_number_p(x)) throw std::runtime_error("certificate: an endpoint is not a finite number");
-    mpz_class mantissa;
-    long exponent = mpfr_get_z_2exp(mantissa.get_mpz_t(), x);
-    // The shortest form: strip the mantissa's trailing zero bits into the exponent.
-    const unsigned long zeros = mpz_scan1(mantissa.get_mpz_t(), 0);
-    mpz_fdiv_q_2exp(mantissa.get_mpz_t(), mantissa.get_mpz_t(), zeros);
-    exponent += static_cast<long>(zeros);
-    if (exponent == 0) return mantissa.get_str();
-    return mantissa.get_str() + "*2^" + std::to_string(exponent);
-}
 
 namespace {
 
 template <class I>
-Json exact_interval(const I& x, long bits) {
-    mpfr_t lo, hi;
-    mpfr_inits2(bits, lo, hi, static_cast<mpfr_ptr>(nullptr));
-    get_bounds(lo, hi, x);
-    // The file's "0" has no sign; the decimal is rendered from the same unsigned zero.
-    if (mpfr_zero_p(lo)) mpfr_set_zero(lo, 1);
-    if (mpfr_zero_p(hi)) mpfr_set_zero(hi, 1);
-    const DecimalEnclosure text = to_decimal(lo, hi, 17);
-    Json result{{"lo", dyadic_text(lo)}, {"hi", dyadic_text(hi)}, {"decimal", "[" + text.lo + ", " + text.hi + "]"}};
-    mpfr_clears(lo, hi, static_cast<mpfr_ptr>(nullptr));
-    return result;
+Json exact_interval(const I& x) {
+    const ExactEnds ends(x);
+    const DecimalEnclosure text = to_decimal(ends.lo(), ends.hi(), 17);
+    return Json{{"lo", dyadic_text(ends.lo())}, {"hi", dyadic_text(ends.hi())}, {"decimal", "[" + text.lo + ", " + text.hi + "]"}};
 }
 
 SelfTestReport passing_self_test() {
@@ -49,10 +29,8 @@ SelfTestReport passing_self_test() {
 
 }  // namespace
 
-// binary64 endpoints are exact in 53 bits. A ball's ends mid +- rad may need more bits than
-// its precision; 64 guard bits keep them exact in practice, and any rounding is outward.
-Json exact_interval_json(const DInterval& x) { return exact_interval(x, 53); }
-Json exact_interval_json(const Ball& x) { return exact_interval(x, x.precision() + 64); }
+Json exact_interval_json(const DInterval& x) { return exact_interval(x); }
+Json exact_interval_json(const Ball& x) { return exact_interval(x); }
 
 template <class Field>
 Json certificate_head(const std::string& command, const Field& field, long digits) {

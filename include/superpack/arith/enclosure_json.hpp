@@ -1,5 +1,7 @@
-// The JSON contract of superpack's output: every real is {"lo": "...", "hi": "..."} with lo
-// rounded down and hi rounded up (decimal.hpp), at the digits the precision supports.
+// The JSON contract of superpack's output: every real is {"lo": "...", "hi": "...", "lo_exact":
+// "m*2^e", "hi_exact": "m*2^e"}: the decimals with lo rounded down and hi rounded up
+// (decimal.hpp), at the digits the precision supports, and the interval's own ends exactly
+// (exact_ends.hpp), which the Python package reads as Fractions.
 #pragma once
 #include <nlohmann/json.hpp>
 
