@@ -3,13 +3,14 @@
 
 The producer's layers, each a folder under include/superpack/ and src/, may include only
 their own layer and the ones below it:   arith -> solve -> geometry -> problems -> cert -> cli
+-> python (the Python module, which runs the command lines of cli).
 sim/ (floating point only) may include arith, solve and geometry, and only cli includes sim.
 checker/ includes nothing of the repository but checker/ itself: it is the independent side.
 tests/ and bench/ may include anything. Libraries: the checker uses none of the producer's
 arithmetic libraries (Arb/FLINT, Boost, Eigen), and Eigen is seen only by the one file that
 computes preconditioners, so no public header pulls it in; Arb/FLINT and MPFR reach a public
 header only through the three entry headers of the code that calls them (arb_access.hpp,
-mpfr_bounds.hpp, dyadic_text.hpp), so a formula's translation unit does not read them. Every translation unit of
+mpfr_bounds.hpp, exact_ends.hpp), so a formula's translation unit does not read them. Every translation unit of
 compile_commands.json and every header (compiled on its own, which also checks that it is
 self-contained) is checked, with the system headers it reads (g++ -M).
 Exit 0 when every include respects the rules, 1 with one line per violation otherwise.
@@ -22,7 +23,7 @@ import shlex
 import subprocess
 import sys
 
-ORDER = ["arith", "solve", "geometry", "problems", "cert", "cli"]
+ORDER = ["arith", "solve", "geometry", "problems", "cert", "cli", "python"]
 SIM_MAY_INCLUDE = {"arith", "solve", "geometry", "sim"}
 CHECKER_USERS = {"cert", "cli", "tests", "bench"}
 
@@ -38,7 +39,7 @@ def layer_of(path, source):
         return parts[2]
     if parts[0] == "src" and len(parts) > 2:
         return parts[1]
-    if parts[0] in ("checker", "tests", "bench"):
+    if parts[0] in ("checker", "tests", "bench", "python"):
         return parts[0]
     return "repository"
 
@@ -65,7 +66,7 @@ def allowed(including, included):
 # Library headers by a fragment of their path, and who may read them (None: no restriction
 # beyond the listed exclusions).
 ENTRY_HEADERS = {"include/superpack/arith/arb_access.hpp", "include/superpack/arith/mpfr_bounds.hpp",
-                 "include/superpack/cert/dyadic_text.hpp"}
+                 "include/superpack/arith/exact_ends.hpp"}
 LIBRARIES = {
     "Eigen": {"fragment": "/eigen3/", "only": {"src/solve/approximate_inverse.cpp"}},
     "Arb/FLINT": {"fragment": "/flint/", "never": {"checker"}, "public_headers": ENTRY_HEADERS},

@@ -75,6 +75,7 @@ void print_json(const Json& document) {
 }
 
 bool json_printed() { return printed_json; }
+void forget_printed_json() { printed_json = false; }
 
 std::vector<std::pair<std::string, AddSubcommand>>& subcommand_registry() {
     static std::vector<std::pair<std::string, AddSubcommand>> registry;

@@ -78,6 +78,8 @@ inline int table_digits(long digits, bool arb) { return arb ? static_cast<int>(d
 // only when no document was printed.
 void print_json(const Json& document);
 bool json_printed();
+// At the start of a command line, so that a second run in one process (python/) starts afresh.
+void forget_printed_json();
 
 // The rounding self-test gate: throws Failure unless directed rounding works here.
 void require_rounding_self_test();

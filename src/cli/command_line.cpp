@@ -1,0 +1,104 @@
+#include "command_line.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <new>
+
+#include "common.hpp"
+#include "superpack/cert/atomic_file.hpp"
+#include "superpack/cert/certificate.hpp"
+#include "superpack/cert/version.hpp"
+
+namespace superpack::cli {
+
+namespace {
+
+// At most max_error_characters, on one line, cut at a character boundary of UTF-8.
+std::string one_line(const std::string& text) {
+    std::string line = text;
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    std::replace(line.begin(), line.end(), '\r', ' ');
+    if (line.size() <= max_error_characters) return line;
+    std::size_t end = max_error_characters - 3;
+    while (end > 0 && (static_cast<unsigned char>(line[end]) & 0xC0) == 0x80) --end;
+    return line.substr(0, end) + "...";
+}
+
+// The subcommand named on the command line, for the header of an error document.
+std::string command_name(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        for (const auto& entry : subcommand_registry())
+            if (entry.first == argv[i]) return entry.first;
+    return "superpack";
+}
+
+// Parses and runs; the exceptions are mapped by run_command_line.
+int parse_and_run(int argc, char** argv) {
+    CLI::App app{"superpack: certified enclosures for dense superball and superdisk packings.\n"
+                 "Every number printed is a rigorous interval [lo, hi].\n"
+                 "Exit codes: 0 done, 1 invalid certificate (verify), 2 bad usage or input, 3 certified\n"
+                 "impossibility, 4 undecided (at this precision), 5 internal error (a bug)."};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", superpack::version());
+    auto registry = subcommand_registry();
+    std::sort(registry.begin(), registry.end());
+    for (const auto& entry : registry) entry.second(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForAllHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForVersion& version) {
+        return app.exit(version);
+    }
+    return exit_ok;
+}
+
+}  // namespace
+
+CommandOutcome run_command_line(int argc, char** argv) {
+    CommandOutcome outcome;
+    outcome.command = command_name(argc, argv);
+    outcome.json = std::any_of(argv + 1, argv + argc, [](const char* argument) { return std::string(argument) == "--json"; });
+    forget_printed_json();
+    try {
+        outcome.code = parse_and_run(argc, argv);
+    } catch (const CLI::ParseError& parse_error) {
+        outcome = {exit_usage, parse_error.what(), outcome.command, outcome.json};
+    } catch (const InputError& input_error) {
+        outcome = {exit_usage, input_error.what(), outcome.command, outcome.json};
+    } catch (const FileError& file_error) {
+        outcome = {exit_usage, file_error.what(), outcome.command, outcome.json};
+    } catch (const std::filesystem::filesystem_error& file_error) {
+        outcome = {exit_usage, file_error.what(), outcome.command, outcome.json};
+    } catch (const CertificateRejected& rejected) {
+        outcome = {exit_invalid, std::string("no certificate written: ") + rejected.what(), outcome.command, outcome.json};
+    } catch (const Failure& failure) {
+        outcome = {failure.code, failure.what(), outcome.command, outcome.json};
+    } catch (const std::domain_error& domain_error) {
+        // A function's contract refused an enclosure of a legal input outside with_field (the audit's
+        // binary64 pieces): undecided, not a crash.
+        outcome = {exit_undecided, undecided_at_precision(domain_error.what(), 0, 0), outcome.command, outcome.json};
+    } catch (const std::bad_alloc&) {
+        outcome = {exit_undecided, "undecided: out of memory", outcome.command, outcome.json};
+    } catch (const std::exception& bug) {
+        outcome = {exit_internal, bug.what(), outcome.command, outcome.json};
+    }
+    if (outcome.code != exit_ok)
+        outcome.message = one_line((outcome.code == exit_internal ? "internal error: " : "") + outcome.message);
+    return outcome;
+}
+
+int report_failure(const CommandOutcome& outcome) {
+    std::cerr << one_line(std::string("superpack: ") + (outcome.code == exit_usage ? "error: " : "") + outcome.message) << "\n";
+    if (outcome.json && !json_printed()) {
+        Json document = base_header_json(outcome.command);
+        document["error"] = outcome.message;
+        document["exit"] = outcome.code;
+        print_json(document);
+    }
+    return outcome.code;
+}
+
+}  // namespace superpack::cli
