@@ -4,7 +4,8 @@
 set -euo pipefail
 packages=(build-essential cmake libboost-dev libmpfr-dev libgmp-dev libeigen3-dev catch2
           libmpfi-dev libflint-arb-dev libflint-dev nlohmann-json3-dev libcli11-dev
-          gnuplot-nox python3 python3-mpmath)
+          gnuplot-nox python3 python3-mpmath python3-dev pybind11-dev python3-pybind11 python3-pytest
+          python3-setuptools python3-wheel python3-venv)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
