@@ -1,7 +1,7 @@
 """Builds the module _superpack and the checker superpack-verify with the repository's CMake
 build (one directory up) and puts both into the package. SUPERPACK_BUILD_DIR names an existing
-build directory to reuse (e.g. build/ after `make`); without it a build directory of its own,
-build-python/, is configured for this interpreter."""
+build directory to reuse (e.g. build after `make`; a relative path is taken from the repository's
+root); without it a build directory of its own, build-python/, is configured for this interpreter."""
 import os
 import pathlib
 import shutil
@@ -19,7 +19,7 @@ class BuildWithCMake(build_py):
     def run(self):
         super().run()
         reused = os.environ.get("SUPERPACK_BUILD_DIR")
-        build = pathlib.Path(reused).resolve() if reused else REPOSITORY / "build-python"
+        build = REPOSITORY / (reused or "build-python")
         if not reused:
             subprocess.run(["cmake", "-S", str(REPOSITORY), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
                             f"-DPython3_EXECUTABLE={sys.executable}"], check=True)
