@@ -62,28 +62,32 @@ CommandOutcome run_command_line(int argc, char** argv) {
     outcome.command = command_name(argc, argv);
     outcome.json = std::any_of(argv + 1, argv + argc, [](const char* argument) { return std::string(argument) == "--json"; });
     forget_printed_json();
+    const auto fail = [&outcome](int code, const std::string& message) {
+        outcome.code = code;
+        outcome.message = message;
+    };
     try {
         outcome.code = parse_and_run(argc, argv);
     } catch (const CLI::ParseError& parse_error) {
-        outcome = {exit_usage, parse_error.what(), outcome.command, outcome.json};
+        fail(exit_usage, parse_error.what());
     } catch (const InputError& input_error) {
-        outcome = {exit_usage, input_error.what(), outcome.command, outcome.json};
+        fail(exit_usage, input_error.what());
     } catch (const FileError& file_error) {
-        outcome = {exit_usage, file_error.what(), outcome.command, outcome.json};
+        fail(exit_usage, file_error.what());
     } catch (const std::filesystem::filesystem_error& file_error) {
-        outcome = {exit_usage, file_error.what(), outcome.command, outcome.json};
+        fail(exit_usage, file_error.what());
     } catch (const CertificateRejected& rejected) {
-        outcome = {exit_invalid, std::string("no certificate written: ") + rejected.what(), outcome.command, outcome.json};
+        fail(exit_invalid, std::string("no certificate written: ") + rejected.what());
     } catch (const Failure& failure) {
-        outcome = {failure.code, failure.what(), outcome.command, outcome.json};
+        fail(failure.code, failure.what());
     } catch (const std::domain_error& domain_error) {
         // A function's contract refused an enclosure of a legal input outside with_field (the audit's
         // binary64 pieces): undecided, not a crash.
-        outcome = {exit_undecided, undecided_at_precision(domain_error.what(), 0, 0), outcome.command, outcome.json};
+        fail(exit_undecided, undecided_at_precision(domain_error.what(), 0, 0));
     } catch (const std::bad_alloc&) {
-        outcome = {exit_undecided, "undecided: out of memory", outcome.command, outcome.json};
+        fail(exit_undecided, "undecided: out of memory");
     } catch (const std::exception& bug) {
-        outcome = {exit_internal, bug.what(), outcome.command, outcome.json};
+        fail(exit_internal, bug.what());
     }
     if (outcome.code != exit_ok)
         outcome.message = one_line((outcome.code == exit_internal ? "internal error: " : "") + outcome.message);
