@@ -85,7 +85,7 @@ def _run(arguments, progress, result_type):
     raise BY_EXIT_CODE.get(code, InternalError)(message, result)
 
 
-def _option(arguments, flag, value, convert=str):
+def _option(arguments, flag, value, convert):
     """Appends `flag value` unless value is None (the command's default)."""
     if value is not None:
         arguments += [flag, convert(value)]
@@ -135,11 +135,8 @@ def _joined(name, separator, convert):
     return join
 
 
-def _basis(value):
-    """'a,b,c; d,e,f; g,h,i' as typed, or three rows of three exact numbers."""
-    if isinstance(value, str):
-        return value
-    return _joined("basis", ";", _joined("basis row", ",", _number("basis entry")))(value)
+# 'a,b,c; d,e,f; g,h,i' as typed, or three rows of three exact numbers.
+_basis = _joined("basis", ";", _joined("basis row", ",", _number("basis entry")))
 
 
 def _files(arguments, flag, paths):
