@@ -1,16 +1,26 @@
 #!/usr/bin/env bash
 # Regenerates the certificates in proofs/ with the superpack built in BUILD_DIR, and replays
 # each with `superpack verify` before keeping it. `make proofs` calls this; `make test`
-# replays every proofs/*.json (tests/test_proofs.cpp).
+# replays every proofs/*.json (tests/test_proofs.cpp). OUT_DIR (default: this repository's
+# proofs/) writes the same certificates elsewhere instead, leaving proofs/ untouched
+# (scripts/same-results.sh regenerates them with two builds that way).
 #
-# Usage: scripts/make-proofs.sh BUILD_DIR
+# Usage: scripts/make-proofs.sh BUILD_DIR [OUT_DIR]
 set -euo pipefail
-build=${1:?usage: scripts/make-proofs.sh BUILD_DIR}
+build=${1:?usage: scripts/make-proofs.sh BUILD_DIR [OUT_DIR]}
 root=$(cd "$(dirname "$0")/.." && pwd)
 superpack=$(cd "$build" && pwd)/superpack
-mkdir -p "$root/proofs"
+if [ -n "${2:-}" ]; then
+    mkdir -p "$2"
+    out=$(cd "$2" && pwd)
+    shown=$out
+else
+    out=$root/proofs
+    shown=proofs
+    mkdir -p "$out"
+fi
 
-# certify NAME COMMAND...: runs `superpack COMMAND... --certificate proofs/NAME.json`, stops on
+# certify NAME COMMAND...: runs `superpack COMMAND... --certificate OUT_DIR/NAME.json`, stops on
 # any exit but 0 (an undecided result writes nothing), and keeps the file only if verify accepts it.
 # An audit with undecided pieces exits 4 after writing the certificate of its decided pieces, and
 # a density whose packing check is undecided exits 4 after writing the certificate of phi alone
@@ -18,13 +28,13 @@ mkdir -p "$root/proofs"
 certify() {
     local name=$1
     shift
-    local file="$root/proofs/$name.json" status=0
+    local file="$out/$name.json" status=0
     rm -f "$file"
     "$superpack" "$@" --certificate "$file" >/dev/null 2>&1 || status=$?
     if [ "$status" -eq 4 ] && { [ "$1" = audit ] || [ "$1" = density ]; } && [ -f "$file" ]; then status=0; fi
     if [ "$status" -ne 0 ]; then echo "superpack $* failed ($status) for $name" >&2; exit "$status"; fi
     "$superpack" verify "$file" >/dev/null
-    echo "proofs/$name.json"
+    echo "$shown/$name.json"
 }
 
 # The densities of the four families at one p each in their domains (binary64 intervals),
