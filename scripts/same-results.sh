@@ -43,7 +43,7 @@
 #
 # The OLD side is cached: OUT_DIR/old/binary.sha256 holds the sha256 of OLD_BUILD's superpack and
 # superpack-verify, and OUT_DIR/old/recipe.sha256 that of the commands above (this script's
-# run_side and make-proofs.sh); when both match and OUT_DIR/old/complete exists, the old side is
+# recipe and make-proofs.sh); when both match and OUT_DIR/old/complete exists, the old side is
 # reused and only the new side runs. The sides run one after the other, not in parallel.
 set -euo pipefail
 
@@ -69,45 +69,52 @@ out=$(cd "$3" && pwd)
 now() { date +%s.%N; }
 elapsed() { python3 -c 'import sys; print("%.1f" % (float(sys.argv[2]) - float(sys.argv[1])))' "$1" "$2"; }
 
-# doc NAME ARGS...: `superpack ARGS...` in the scratch working directory; stdout to json/NAME.json,
-# its exit status to json/NAME.rc (a failing command is a result to compare, not a stop).
-doc() {
-    local name=$1 start status=0
-    shift
-    start=$(now)
-    (cd "$side_dir/work" && "$superpack" "$@" >"$side_dir/json/$name.json" 2>"$side_dir/json/$name.stderr") || status=$?
-    echo "$status" >"$side_dir/json/$name.rc"
-    printf '%s\t%s\t%s\n' "$name" "$(elapsed "$start" "$(now)")" "$status" >>"$side_dir/times.tsv"
-    printf '  %-24s exit %s, %s s\n' "$name" "$status" "$(elapsed "$start" "$(now)")"
+# The commands, one a line: NAME ARGS... (no argument holds a space or a glob). Outputs are
+# given relative to the working directory, so that the paths they print (audit's "file") are the
+# same on both sides.
+recipe='report report --json --output report.json
+best-p0.6 best --p 0.6 --json
+best-p0.9 best --p 0.9 --json
+best-p2 best --p 2 --json
+best-p0.3 best --p 0.3 --json
+critical-p2-gap1e-4 critical --p 2 --gap 1e-4 --threads 2 --json
+audit audit --json --output-directory audit
+simulate-p2-n2-seed1 simulate --p 2 --n 2 --seed 1 --json'
+
+# record DIR NAME START STATUS: one line of DIR/times.tsv, and on stdout.
+record() {
+    local seconds
+    seconds=$(elapsed "$3" "$(now)")
+    printf '%s\t%s\t%s\n' "$2" "$seconds" "$4" >>"$1/times.tsv"
+    printf '  %-24s exit %s, %s s\n' "$2" "$4" "$seconds"
 }
 
-# run_side BUILD DIR: every command above with BUILD, into DIR (emptied first).
+# run_side BUILD DIR: every command of the recipe with BUILD, into DIR (emptied first): stdout to
+# DIR/json/NAME.json, the exit status to DIR/json/NAME.rc (a failing command is a result to
+# compare, not a stop), then make-proofs.sh into DIR/proofs.
 run_side() {
-    local build=$1 start status=0
-    side_dir=$2
-    superpack=$build/superpack
-    rm -rf "$side_dir"
-    mkdir -p "$side_dir/json" "$side_dir/work/audit"
+    local build=$1 dir=$2 start begin status words name
+    rm -rf "$dir"
+    mkdir -p "$dir/json" "$dir/work/audit"
     start=$(now)
-    doc report report --json --output report.json
-    doc best-p0.6 best --p 0.6 --json
-    doc best-p0.9 best --p 0.9 --json
-    doc best-p2 best --p 2 --json
-    doc best-p0.3 best --p 0.3 --json
-    doc critical-p2-gap1e-4 critical --p 2 --gap 1e-4 --threads 2 --json
-    doc audit audit --json --output-directory audit
-    doc simulate-p2-n2-seed1 simulate --p 2 --n 2 --seed 1 --json
-    local proofs_start
-    proofs_start=$(now)
-    "$root/scripts/make-proofs.sh" "$build" "$side_dir/proofs" >"$side_dir/make-proofs.log" 2>&1 || status=$?
-    echo "$status" >"$side_dir/make-proofs.rc"
-    printf '%s\t%s\t%s\n' make-proofs "$(elapsed "$proofs_start" "$(now)")" "$status" >>"$side_dir/times.tsv"
-    printf '  %-24s exit %s, %s s\n' make-proofs "$status" "$(elapsed "$proofs_start" "$(now)")"
-    elapsed "$start" "$(now)" >"$side_dir/seconds"
+    while read -r -a words; do
+        name=${words[0]}
+        begin=$(now)
+        status=0
+        (cd "$dir/work" && "$build/superpack" "${words[@]:1}" </dev/null >"$dir/json/$name.json" 2>"$dir/json/$name.stderr") || status=$?
+        echo "$status" >"$dir/json/$name.rc"
+        record "$dir" "$name" "$begin" "$status"
+    done <<<"$recipe"
+    begin=$(now)
+    status=0
+    "$root/scripts/make-proofs.sh" "$build" "$dir/proofs" >"$dir/make-proofs.log" 2>&1 || status=$?
+    echo "$status" >"$dir/make-proofs.rc"
+    record "$dir" make-proofs "$begin" "$status"
+    elapsed "$start" "$(now)" >"$dir/seconds"
 }
 
 binary_stamp() { (cd "$1" && sha256sum superpack superpack-verify); }
-recipe_stamp() { { declare -f run_side doc; cat "$root/scripts/make-proofs.sh"; } | sha256sum; }
+recipe_stamp() { { echo "$recipe"; cat "$root/scripts/make-proofs.sh"; } | sha256sum; }
 
 old_dir=$out/old
 new_dir=$out/new
