@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
-#include <mutex>
-#include <thread>
 
 #include "critical_box.hpp"
 #include "superpack/geometry/superball.hpp"
 #include "superpack/problems/best.hpp"
+#include "superpack/solve/branch_and_bound.hpp"
 
 namespace superpack {
 
@@ -59,14 +57,7 @@ void require_split(int split) {
 
 std::vector<ChartBox<DInterval>> split_domain(int split) {
     require_split(split);
-    std::vector<ChartBox<DInterval>> boxes = top_level_domain();
-    for (int level = 0; level < split; ++level) {
-        std::vector<ChartBox<DInterval>> halves;
-        for (const ChartBox<DInterval>& box : boxes)
-            for (const ChartBox<DInterval>& half : split_box(box)) halves.push_back(half);
-        boxes.swap(halves);
-    }
-    return boxes;
+    return split_start_boxes(top_level_domain(), split, split_box);
 }
 
 ChartBox<DInterval> chart_box_around(const DoubleBasis& basis, MinkowskiCase configuration, double half_width) {
@@ -115,33 +106,7 @@ CriticalReference<DInterval> critical_reference(const Rational& p, const DoubleF
 
 namespace {
 
-// One work queue shared by the threads: a stack of boxes (depth first keeps it short). The
-// leaves' reasons do not depend on the order, so the counts are the same for any number of
-// threads unless the budget is reached.
-struct WorkQueue {
-    std::mutex mutex;
-    std::condition_variable wake;
-    std::vector<ChartBox<DInterval>> stack;
-    // With record_trees: each stacked box's place in its tree (the start box's index in 6 digits,
-    // then 0 or 1 per split), and each decided box's place and letters. Sorted by place, the
-    // letters are the trees in pre-order.
-    bool record = false;
-    std::vector<std::string> places;
-    std::vector<std::pair<std::string, std::string>> records;
-    int active = 0;
-    long processed = 0;
-    std::array<long, box_reasons> counts{};
-    std::vector<UndecidedBox<DInterval>> undecided;
-    bool finished = false;
-};
-
 constexpr std::size_t kept_undecided = 20;
-
-// The place of start box k: its index in 6 digits, so that places sort by box first.
-std::string tree_place(std::size_t k) {
-    std::string digits = std::to_string(k);
-    return std::string(6 - std::min<std::size_t>(6, digits.size()), '0') + digits;
-}
 
 // The chart boxes of half-width `radius` around the images of the setup's closing regions.
 std::vector<ChartBox<DInterval>> boxes_around_images(const CriticalResult<DInterval>& setup, double radius) {
@@ -152,62 +117,33 @@ std::vector<ChartBox<DInterval>> boxes_around_images(const CriticalResult<DInter
     return boxes;
 }
 
-// The records sorted by place are each tree in pre-order (a place sorts before its extensions,
-// and '0' before '1').
-std::vector<std::string> assemble_trees(std::vector<std::pair<std::string, std::string>>& records, std::size_t count) {
-    std::sort(records.begin(), records.end());
-    std::vector<std::string> trees(count);
-    for (const auto& record : records) trees[std::stoul(record.first.substr(0, 6))] += record.second;
-    return trees;
-}
+// critical's driver of the branch and bound: one box is decided by critical_box, and a leaf is
+// the box with its reason (decided or not); the first few undecided ones are kept.
+struct CriticalDriver {
+    using Box = ChartBox<DInterval>;
+    using Leaf = UndecidedBox<DInterval>;
+    BoxContext context;
+    std::vector<Leaf> undecided;
 
-void work(WorkQueue& queue, const BoxContext& context, long max_boxes) {
-    std::unique_lock<std::mutex> lock(queue.mutex);
-    for (;;) {
-        queue.wake.wait(lock, [&] { return !queue.stack.empty() || queue.active == 0; });
-        if (queue.stack.empty()) {
-            queue.finished = true;
-            queue.wake.notify_all();
-            return;
-        }
-        ChartBox<DInterval> box = queue.stack.back();
-        queue.stack.pop_back();
-        std::string place;
-        if (queue.record) {
-            place = std::move(queue.places.back());
-            queue.places.pop_back();
-        }
-        const bool over_budget = queue.processed >= max_boxes;
-        ++queue.processed;
-        ++queue.active;
-        lock.unlock();
-        std::string letters;
-        const BoxDecision decision = over_budget ? BoxDecision{BoxReason::undecided_budget, box}
-                                                 : decide_box(box, context, queue.record ? &letters : nullptr);
-        const std::optional<BoxReason>& reason = decision.reason;
-        std::array<ChartBox<DInterval>, 2> halves;
-        if (!reason) {
-            halves = split_box(decision.box);
-            letters += 'S';
-        }
-        lock.lock();
-        if (queue.record) {
-            if (!reason) {
-                queue.places.push_back(place + '1');
-                queue.places.push_back(place + '0');
-            }
-            queue.records.emplace_back(std::move(place), std::move(letters));
-        }
-        --queue.active;
-        if (reason) {
-            ++queue.counts[static_cast<int>(*reason)];
-            if (!decided(*reason) && queue.undecided.size() < kept_undecided) queue.undecided.push_back({box, *reason});
-        } else {
-            queue.stack.push_back(halves[1]);
-            queue.stack.push_back(halves[0]);
-        }
-        queue.wake.notify_all();
+    Examined<Box, Leaf> examine(const Box& box, Visit& visit) const {
+        const BoxDecision decision = decide_box(box, context, visit.letters);
+        if (decision.reason) return leaf_of<Box>(Leaf{box, *decision.reason});
+        if (visit.letters) *visit.letters += 'S';
+        return split_of<Box, Leaf>(decision.box);
     }
+    std::array<Box, 2> split(const Box& box) const { return split_box(box); }
+    Leaf unexamined(const Box& box) const { return Leaf{box, BoxReason::undecided_budget}; }
+    std::size_t reason(const Leaf& leaf) const { return static_cast<std::size_t>(leaf.reason); }
+    void collect(Leaf&& leaf) {
+        if (!decided(leaf.reason) && undecided.size() < kept_undecided) undecided.push_back(std::move(leaf));
+    }
+};
+
+template <class Counts>
+std::array<long, box_reasons> reason_counts(const Counts& counts) {
+    std::array<long, box_reasons> by_reason{};
+    for (std::size_t r = 0; r < counts.size() && r < by_reason.size(); ++r) by_reason[r] = counts[r];
+    return by_reason;
 }
 
 }  // namespace
@@ -242,53 +178,35 @@ CriticalResult<DInterval> critical_setup(const CriticalReference<DInterval>& ref
 CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& reference, const CriticalOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     CriticalResult<DInterval> result = critical_setup(reference, options);
-    WorkQueue queue;
     const std::vector<ChartBox<DInterval>> domain = options.around > 0          ? boxes_around_images(result, options.around)
                                                     : options.start_boxes.empty() ? split_domain(options.split)
                                                                                   : options.start_boxes;
-    for (std::size_t k = 0; k < domain.size(); ++k)
-        if (static_cast<int>(k % static_cast<std::size_t>(options.shards)) == options.shard) queue.stack.push_back(domain[k]);
     result.partial_domain = options.shards > 1 || !options.start_boxes.empty() || options.around > 0;
-    result.start_boxes = static_cast<long>(queue.stack.size());
-    std::reverse(queue.stack.begin(), queue.stack.end());
-    queue.record = options.record_trees;
-    if (queue.record) {
-        result.boxes.assign(queue.stack.rbegin(), queue.stack.rend());
-        for (std::size_t k = queue.stack.size(); k-- > 0;) queue.places.push_back(tree_place(k));
-    }
 
-    const BoxContext context =
-        box_context(options.p, result.volume, result.threshold, result.regions, result.images, options.min_width);
-    std::vector<std::thread> threads;
-    for (int t = 0; t < std::max(1, options.threads); ++t)
-        threads.emplace_back([&] { work(queue, context, options.max_boxes); });
-    std::thread monitor;
+    CriticalDriver driver{box_context(options.p, result.volume, result.threshold, result.regions, result.images, options.min_width), {}};
+    BranchOptions search;
+    search.threads = std::max(1, options.threads);
+    search.max_boxes = options.max_boxes;
+    search.shard = options.shard;
+    search.shards = options.shards;
+    search.record_trees = options.record_trees;
     if (options.progress)
-        monitor = std::thread([&] {
-            std::unique_lock<std::mutex> lock(queue.mutex);
-            while (!queue.wake.wait_for(lock, std::chrono::seconds(2), [&] { return queue.finished; })) {
-                CriticalProgress progress;
-                progress.processed = queue.processed;
-                progress.queued = static_cast<long>(queue.stack.size());
-                progress.counts = queue.counts;
-                progress.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                lock.unlock();
-                options.progress(progress);
-                lock.lock();
-            }
-        });
-    for (std::thread& thread : threads) thread.join();
-    if (monitor.joinable()) monitor.join();
+        search.progress = [&](const BranchProgress& progress) {
+            options.progress(CriticalProgress{progress.processed, progress.queued, reason_counts(progress.counts), progress.seconds});
+        };
+    BranchResult<ChartBox<DInterval>> search_result = branch_and_bound(driver, domain, search);
 
-    result.counts = queue.counts;
-    result.processed = queue.processed;
-    result.undecided = queue.undecided;
+    result.start_boxes = static_cast<long>(search_result.starts.size());
+    if (options.record_trees) result.boxes = search_result.starts;
+    result.counts = reason_counts(search_result.counts);
+    result.processed = search_result.processed;
+    result.undecided = driver.undecided;
     long undecided = 0;
     for (int r = 0; r < box_reasons; ++r)
         if (!decided(static_cast<BoxReason>(r))) undecided += result.counts[r];
     if (undecided == 0) {
         result.status = Outcome::proved;
-        if (queue.record) result.trees = assemble_trees(queue.records, result.boxes.size());
+        if (options.record_trees) result.trees = std::move(search_result.trees);
         result.message = result.partial_domain
                              ? "every box of this part of the domain is decided: on it every lattice packing has |det| >= T"
                              : "every box is decided: every lattice packing of K has |det| >= T, so density <= V(K) / T";
