@@ -1,10 +1,11 @@
 #include "superpack/geometry/star_overlap.hpp"
 
-#include <queue>
+#include <optional>
 #include <string>
 
 #include "superpack/geometry/star_cases.hpp"
 #include "superpack/solve/bisection.hpp"
+#include "superpack/solve/branch_and_bound.hpp"
 
 namespace superpack {
 
@@ -53,6 +54,63 @@ I lower_bound_of_both(const std::vector<I>& x, const std::vector<I>& origin, con
     return larger_point(lower_point(shifted_gauge_power(x, origin, q)), lower_point(shifted_gauge_power(x, v, q)));
 }
 
+// star_overlap's driver of the branch and bound, best first: the box with the least lower
+// bound of max(g, g(. - v)) next, as in a global minimisation of that function against the
+// threshold 1. A depth-first order followed the boundary of one body for ever where the bodies
+// do overlap. The order is only a heuristic: every answer comes from the certified tests.
+template <class I>
+struct OverlapDriver {
+    using Box = std::vector<I>;
+    enum class Kind { discarded, witness, left };  // a leaf's reason
+    struct Leaf {
+        Kind kind;
+        Box box;
+        std::optional<StarOverlapWitness<I>> witness;
+    };
+    const std::vector<I>& origin;
+    const std::vector<I>& v;
+    const I &q, &inverse_q, &one;
+    const StarOverlapOptions& options;
+    StarOverlap<I>& result;
+
+    double priority(const Box& box) const { return mid_double(lower_bound_of_both(box, origin, v, q)); }
+
+    Examined<Box, Leaf> examine(const Box& box, Visit&) const {
+        std::vector<I> x = box;
+        // Contract by both inequalities until a pass narrows the box by less than a tenth.
+        bool empty = false;
+        for (int pass = 0; pass < 8 && !empty; ++pass) {
+            const double before = width_upper(x[widest_component(x)]);
+            empty = !contract(x, origin, q, inverse_q) || !contract(x, v, q, inverse_q);
+            if (!empty && width_upper(x[widest_component(x)]) > 0.9 * before) break;
+        }
+        if (empty) return leaf_of<Box>(Leaf{Kind::discarded, {}, std::nullopt});
+        const std::vector<I> center = center_of(x);
+        const I value = shifted_gauge_power(center, origin, q), translate = shifted_gauge_power(center, v, q);
+        if (certainly_less(value, one) && certainly_less(translate, one))
+            return leaf_of<Box>(Leaf{Kind::witness, {}, StarOverlapWitness<I>{center, value, translate}}, true);
+        return split_of<Box, Leaf>(std::move(x));
+    }
+    std::array<Box, 2> split(const Box& box) const {
+        auto halves = bisect_widest(box);
+        return {std::move(halves.first), std::move(halves.second)};
+    }
+    Leaf unexamined(const Box& box) const { return Leaf{Kind::left, box, std::nullopt}; }
+    std::size_t reason(const Leaf& leaf) const { return static_cast<std::size_t>(leaf.kind); }
+    // The boxes left are handed over least first, so the listed ones are the nearest to a contact.
+    void collect(Leaf&& leaf) {
+        if (leaf.kind == Kind::witness) {
+            result.disjoint = Outcome::refuted;
+            result.witness = std::move(leaf.witness);
+        }
+        if (leaf.kind != Kind::left || result.disjoint == Outcome::refuted) return;
+        ++result.remaining_count;
+        const I bound = lower_bound_of_both(leaf.box, origin, v, q);
+        if (!result.remaining_bound || certainly_less(bound, *result.remaining_bound)) result.remaining_bound = bound;
+        if (static_cast<int>(result.remaining.size()) < options.max_remaining) result.remaining.push_back(std::move(leaf.box));
+    }
+};
+
 }  // namespace
 
 template <class I>
@@ -100,55 +158,12 @@ StarOverlap<I> star_overlap(const Superball& body, const std::vector<I>& v, cons
         return result;
     }
 
-    // Best first: the box with the least lower bound of max(g, g(. - v)) next, as in a global
-    // minimisation of that function against the threshold 1. A depth-first order followed the
-    // boundary of one body for ever where the bodies do overlap. The order is only a heuristic:
-    // every answer comes from the certified tests.
-    struct Pending {
-        double key;
-        std::vector<I> box;
-        bool operator<(const Pending& other) const { return key > other.key; }  // least key on top
-    };
-    auto pending = [&](std::vector<I>&& box) {
-        const double key = mid_double(lower_bound_of_both(box, origin, v, q));
-        return Pending{key, std::move(box)};
-    };
-    std::priority_queue<Pending> queue;
-    queue.push(pending(std::move(start)));
-    while (!queue.empty() && result.boxes < options.max_boxes) {
-        std::vector<I> x = queue.top().box;
-        queue.pop();
-        ++result.boxes;
-        // Contract by both inequalities until a pass narrows the box by less than a tenth.
-        bool empty = false;
-        for (int pass = 0; pass < 8 && !empty; ++pass) {
-            const double before = width_upper(x[widest_component(x)]);
-            empty = !contract(x, origin, q, inverse_q) || !contract(x, v, q, inverse_q);
-            if (!empty && width_upper(x[widest_component(x)]) > 0.9 * before) break;
-        }
-        if (empty) continue;
-        const std::vector<I> center = center_of(x);
-        const I value = shifted_gauge_power(center, origin, q), translate = shifted_gauge_power(center, v, q);
-        if (certainly_less(value, one) && certainly_less(translate, one)) {
-            result.disjoint = Outcome::refuted;
-            result.witness = StarOverlapWitness<I>{center, value, translate};
-            return result;
-        }
-        auto halves = bisect_widest(x);
-        queue.push(pending(std::move(halves.first)));
-        queue.push(pending(std::move(halves.second)));
-    }
-    if (queue.empty()) {
-        result.disjoint = Outcome::proved;
-        return result;
-    }
-    result.remaining_count = static_cast<long>(queue.size());
-    // The least box first, so the listed ones are the nearest to a contact.
-    for (; !queue.empty(); queue.pop()) {
-        const I bound = lower_bound_of_both(queue.top().box, origin, v, q);
-        if (!result.remaining_bound || certainly_less(bound, *result.remaining_bound)) result.remaining_bound = bound;
-        if (static_cast<int>(result.remaining.size()) < options.max_remaining) result.remaining.push_back(queue.top().box);
-    }
+    OverlapDriver<I> driver{origin, v, q, inverse_q, one, options, result};
+    BranchOptions search;
+    search.order = BranchOrder::best_first;
+    search.max_boxes = options.max_boxes;
+    result.boxes = branch_and_bound(driver, {start}, search).examined;
+    if (result.disjoint == Outcome::undecided && result.remaining_count == 0) result.disjoint = Outcome::proved;
     return result;
 }
 
