@@ -14,11 +14,11 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
-#include <queue>
 #include <string>
 #include <vector>
 
 #include "superpack/solve/bisection.hpp"
+#include "superpack/solve/branch_and_bound.hpp"
 
 namespace superpack {
 
@@ -67,72 +67,102 @@ struct Minimum {
     bool certified = false;                   // no undecided leaf, and a best value exists
 };
 
+namespace minimise_detail {
+
+// minimise's driver of the branch and bound. A new box (a child of a split, or the domain) is
+// bounded at once and deferred into best-first order when bounded; one that is not is bisected
+// at once, depth first, until its halves are bounded or it is too narrow. A deferred box taken
+// back (the least lower bound) either ends the search (the stopping rule, the budget) or has f
+// evaluated at its center and is bisected.
+template <class I, class Data, class Witness, class Bound, class Value>
+struct Driver {
+    struct Box {
+        std::vector<I> box;
+        std::optional<BoundedBox<I, Data>> bounded;  // once bounded and deferred
+    };
+    struct Leaf {
+        BoundedBox<I, Data> bounded;
+        bool left = false;  // left open when the search stopped (classified after it)
+    };
+    const Bound& bound;
+    const Value& value;
+    const MinimiseOptions& options;
+    Minimum<I, Data, Witness>& result;
+    std::vector<BoundedBox<I, Data>> left;
+
+    static double key(const BoundedBox<I, Data>& box) { return mid_double(lower_point(box.lower)); }
+    bool above_best(const BoundedBox<I, Data>& box) const {
+        return result.best && certainly_less(upper_point(result.best->value), lower_point(box.lower));
+    }
+    void consider(const std::vector<I>& point) {
+        std::optional<PointValue<I, Witness>> at = value(point);
+        if (at && (!result.best || mid_double(upper_point(at->value)) < mid_double(upper_point(result.best->value))))
+            result.best = std::move(at);
+    }
+
+    Examined<Box, Leaf> examine(const Box& box, Visit& visit) {
+        if (!box.bounded) {
+            BoundedBox<I, Data> bounded = bound(box.box, result.best ? std::optional<I>(result.best->value) : std::nullopt);
+            if (bounded.bounded) {
+                const double priority = key(bounded);
+                return defer_of<Box, Leaf>(Box{bounded.box, std::move(bounded)}, priority);
+            }
+            if (width_upper(bounded.box[widest_component(bounded.box)]) < options.min_undecided_width ||
+                static_cast<std::size_t>(visit.closed_leaves + visit.deferred) + 2 > options.max_pieces) {
+                bounded.fate = LeafFate::undecided;
+                return leaf_of<Box>(Leaf{std::move(bounded), false});
+            }
+            return split_of<Box, Leaf>(Box{bounded.box, std::nullopt});
+        }
+        const BoundedBox<I, Data>& top = *box.bounded;
+        if (above_best(top)) return stop_at<Box, Leaf>(box);  // so is everything still open
+        if (result.best) {
+            const double upper = mid_double(upper_point(result.best->value));
+            if (upper - key(top) <= options.relative_tolerance * std::fabs(upper)) return stop_at<Box, Leaf>(box);  // stopping rule only
+        }
+        // The box taken back still counts as open here, as it did before it was taken.
+        if (static_cast<std::size_t>(visit.closed_leaves + visit.deferred) + 1 + 2 > options.max_pieces ||
+            width_upper(top.box[widest_component(top.box)]) < options.min_width)
+            return stop_at<Box, Leaf>(box);
+        consider(center_of(top.box));
+        return split_of<Box, Leaf>(box);
+    }
+    std::array<Box, 2> split(const Box& box) const {
+        auto halves = bisect_widest(box.box);
+        return {Box{std::move(halves.first), std::nullopt}, Box{std::move(halves.second), std::nullopt}};
+    }
+    // Only boxes taken back from best-first order are left open (a new box is examined at once).
+    Leaf unexamined(const Box& box) const { return Leaf{*box.bounded, true}; }
+    std::size_t reason(const Leaf& leaf) const { return leaf.left ? 1 : 0; }
+    void collect(Leaf&& leaf) {
+        if (leaf.left)
+            left.push_back(std::move(leaf.bounded));
+        else
+            result.leaves.push_back(std::move(leaf.bounded));
+    }
+};
+
+}  // namespace minimise_detail
+
 // bound(box, best) -> BoundedBox<I, Data> (bounded or not, with its reason), where best is the
 // lowest certified value found so far (std::optional<I>), so that a bound can give up early
 // where it already lies above it; value(point) ->
 // std::optional<PointValue<I, Witness>>, f at a point of the domain (or nothing when it could
 // not be certified there). `known`: a certified value of f at a point of the domain, if any.
+// The search runs on the branch-and-bound engine (branch_and_bound.hpp), in one thread.
 template <class I, class Data, class Witness, class Bound, class Value>
 Minimum<I, Data, Witness> minimise(const std::vector<I>& domain, const Bound& bound, const Value& value,
                                    std::optional<PointValue<I, Witness>> known, const MinimiseOptions& options) {
-    using Box = BoundedBox<I, Data>;
     Minimum<I, Data, Witness> result;
     result.best = std::move(known);
-    auto key = [](const Box& box) { return mid_double(lower_point(box.lower)); };
-    auto later = [&](const Box& a, const Box& b) { return key(a) > key(b); };
-    std::priority_queue<Box, std::vector<Box>, decltype(later)> open(later);
-    auto consider = [&](const std::vector<I>& point) {
-        std::optional<PointValue<I, Witness>> at = value(point);
-        if (at && (!result.best || mid_double(upper_point(at->value)) < mid_double(upper_point(result.best->value))))
-            result.best = std::move(at);
-    };
-    auto bound_below_best = [&](const std::vector<I>& box) {
-        return bound(box, result.best ? std::optional<I>(result.best->value) : std::nullopt);
-    };
-    auto above_best = [&](const Box& box) {
-        return result.best && certainly_less(upper_point(result.best->value), lower_point(box.lower));
-    };
-    // An unbounded box is bisected until its halves are bounded or it is too narrow.
-    auto file = [&](Box box, auto& self) -> void {
-        if (box.bounded) {
-            open.push(std::move(box));
-            return;
-        }
-        if (width_upper(box.box[widest_component(box.box)]) < options.min_undecided_width ||
-            result.leaves.size() + open.size() + 2 > options.max_pieces) {
-            box.fate = LeafFate::undecided;
-            result.leaves.push_back(std::move(box));
-            return;
-        }
-        auto halves = bisect_widest(box.box);
-        self(bound_below_best(halves.first), self);
-        self(bound_below_best(halves.second), self);
-    };
-    file(bound_below_best(domain), file);
-    while (!open.empty()) {
-        const Box& top = open.top();
-        if (above_best(top)) break;  // so is everything still open
-        if (result.best) {
-            const double upper = mid_double(upper_point(result.best->value));
-            if (upper - key(top) <= options.relative_tolerance * std::fabs(upper)) break;  // stopping rule only
-        }
-        if (result.leaves.size() + open.size() + 2 > options.max_pieces ||
-            width_upper(top.box[widest_component(top.box)]) < options.min_width)
-            break;
-        const std::vector<I> box = top.box;
-        open.pop();
-        consider(center_of(box));
-        auto halves = bisect_widest(box);
-        file(bound_below_best(halves.first), file);
-        file(bound_below_best(halves.second), file);
-    }
+    minimise_detail::Driver<I, Data, Witness, Bound, Value> driver{bound, value, options, result, {}};
+    branch_and_bound(driver, {{domain, std::nullopt}}, BranchOptions{});
     bool undecided = false;
-    for (const Box& leaf : result.leaves) undecided = undecided || leaf.fate == LeafFate::undecided;
+    for (const auto& leaf : result.leaves) undecided = undecided || leaf.fate == LeafFate::undecided;
     if (result.best) result.lowest = result.best->value;
-    while (!open.empty()) {
-        Box leaf = open.top();
-        open.pop();
-        if (above_best(leaf)) {
+    // The boxes left open, least first: those above the best value hold no minimiser.
+    for (BoundedBox<I, Data>& leaf : driver.left) {
+        if (driver.above_best(leaf)) {
             leaf.fate = LeafFate::discarded;
         } else {
             leaf.fate = LeafFate::candidate;
