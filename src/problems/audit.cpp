@@ -1,11 +1,11 @@
 #include "superpack/problems/audit.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <sstream>
 
 #include "superpack/problems/s6.hpp"
 #include "superpack/problems/s6_branch.hpp"
+#include "superpack/solve/branch_and_bound.hpp"
 
 namespace superpack {
 
@@ -188,6 +188,94 @@ AuditPiece audit_piece(Family family, const Rational& lo, const Rational& hi,
     return piece;
 }
 
+// A piece of p to audit. `downward` is set when it is split: S6 below 9/10 walks down, the upper
+// half first, linked to the box before.
+struct AuditSpan {
+    Rational lo, hi;
+    int depth = 0;
+    bool downward = false;
+};
+
+// audit's driver of the branch and bound, depth first in one thread, so that each piece is
+// audited right after its neighbour (the continuation links them): audit_piece decides a piece;
+// an unsettled one is bisected while the depth and the piece limit allow, and one that stays
+// unsettled still gets the certified check at its midpoint.
+struct AuditDriver {
+    using Box = AuditSpan;
+    using Leaf = AuditPiece;
+    Family family;
+    AuditBranch branch;
+    const AuditSettings& settings;
+    const AuditProgress& progress;
+    AuditResult& result;
+    std::optional<BranchTracker>& tracker;
+    std::size_t& planned;  // pieces audited or still to be audited: a bisection adds one
+    // D14 and S6: once a piece at the subdivision floor breaks the continuation, a later root
+    // box is no longer tied to the branch (near p*_o it may hold the mirror root), so later
+    // pieces are not audited: they would certify nothing about the branch, and their bisection
+    // would grow full trees of 2^max_depth undecided pieces. (O1 keeps going: its point
+    // refutations need no chain.)
+    bool chain_broken = false;
+
+    Examined<Box, Leaf> examine(const Box& span, Visit&) {
+        if (chain_broken) return leaf_of<Box>(not_audited(span));
+        AuditPiece piece = audit_piece(family, span.lo, span.hi, tracker ? &*tracker : nullptr);
+        piece.detail["lattice"] = branch == AuditBranch::published ? "published" : "second root of Eq. (12)";
+        const bool settled = piece.outcome == "packing" || piece.outcome == "overlapping" || piece.outcome == "no_lattice";
+        if (settled) return leaf_of<Box>(std::move(piece));
+        const bool budget = planned < settings.max_pieces;
+        if (span.depth < settings.max_depth && budget) {
+            ++planned;
+            return split_of<Box, Leaf>(AuditSpan{span.lo, span.hi, span.depth, tracker && tracker->downward});
+        }
+        chain_broken = family == Family::D14 || family == Family::S6;
+        piece.reason += budget ? " (subdivision floor reached)" : " (piece limit " + std::to_string(settings.max_pieces) + " reached)";
+        // Not for S6, whose lattice is a packing wherever its point exists.
+        if (family != Family::S6) check_midpoint(piece);
+        return leaf_of<Box>(std::move(piece));
+    }
+    std::array<Box, 2> split(const Box& span) const {
+        Rational middle = (span.lo + span.hi) / 2;
+        middle.canonicalize();
+        const AuditSpan lower{span.lo, middle, span.depth + 1}, upper{middle, span.hi, span.depth + 1};
+        return span.downward ? std::array<Box, 2>{upper, lower} : std::array<Box, 2>{lower, upper};
+    }
+    // Never called: the audit's run has no box budget (the piece limit is the driver's) and no stop.
+    Leaf unexamined(const Box& span) const { return not_audited(span); }
+    std::size_t reason(const Leaf&) const { return 0; }
+    void collect(Leaf&& piece) {
+        if (progress)
+            progress(std::string(to_string(family)) + " p in [" + decimal_or_fraction_text(piece.lo) + ", " +
+                     decimal_or_fraction_text(piece.hi) + "]: " + piece.outcome);
+        result.pieces.push_back(std::move(piece));
+    }
+
+    AuditPiece not_audited(const Box& span) const {
+        AuditPiece piece;
+        piece.lo = span.lo;
+        piece.hi = span.hi;
+        piece.reason = std::string("not audited: the continuation of the branch from ") +
+                       (family == Family::S6 ? "p = 9/10" : "p = 1/2") + " broke before this piece";
+        piece.detail["p"] = Json{{"lo", rational_text(span.lo)}, {"hi", rational_text(span.hi)}};
+        piece.detail["family_status"] = "undecided";
+        return piece;
+    }
+    // A refutation at one exact p of the piece is still certified: try the midpoint.
+    void check_midpoint(AuditPiece& piece) const {
+        Rational middle = (piece.lo + piece.hi) / 2;
+        middle.canonicalize();
+        BranchTracker copy = tracker ? *tracker : BranchTracker{};
+        copy.previous.reset();  // the midpoint is no end of the previous piece
+        const AuditPiece point = audit_piece(family, middle, middle, tracker ? &copy : nullptr);
+        piece.detail["midpoint_check"] = point.detail;
+        if (point.outcome == "overlapping") {
+            piece.outcome = "overlapping_at_point";
+            piece.witness = point.witness;
+            piece.reason += "; at p = " + rational_text(middle) + " the lattice overlaps (witness in midpoint_check)";
+        }
+    }
+};
+
 }  // namespace
 
 AuditRange claimed_audit_range(Family family) {
@@ -283,79 +371,19 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     if (planned > settings.max_pieces)
         throw InputError("the audit would start with " + std::to_string(planned) + " pieces, more than the limit " +
                          std::to_string(settings.max_pieces));
-    // D14: once a piece at the subdivision floor breaks the continuation, a later root box is
-    // no longer tied to the branch through p = 1/2 (near p*_o it may hold the mirror root), so
-    // later pieces are not audited: they would certify nothing about the branch, and their
-    // bisection would grow full trees of 2^max_depth undecided pieces. (O1 keeps going: its
-    // point refutations need no chain.)
-    bool chain_broken = false;
-    auto progress_line = [&](const Rational& lo, const Rational& hi, const std::string& outcome) {
-        if (progress)
-            progress(std::string(to_string(family)) + " p in [" + decimal_or_fraction_text(lo) + ", " +
-                     decimal_or_fraction_text(hi) + "]: " + outcome);
-    };
-    std::function<void(const Rational&, const Rational&, int)> audit = [&](const Rational& lo, const Rational& hi,
-                                                                           int depth) {
-        if (chain_broken) {
-            AuditPiece piece;
-            piece.lo = lo;
-            piece.hi = hi;
-            piece.reason = std::string("not audited: the continuation of the branch from ") + (family == Family::S6 ? "p = 9/10" : "p = 1/2") + " broke before this piece";
-            piece.detail["p"] = Json{{"lo", rational_text(lo)}, {"hi", rational_text(hi)}};
-            piece.detail["family_status"] = "undecided";
-            progress_line(lo, hi, piece.outcome);
-            result.pieces.push_back(std::move(piece));
-            return;
-        }
-        AuditPiece piece = audit_piece(family, lo, hi, tracker ? &*tracker : nullptr);
-        piece.detail["lattice"] = branch == AuditBranch::published ? "published" : "second root of Eq. (12)";
-        const bool settled = piece.outcome == "packing" || piece.outcome == "overlapping" || piece.outcome == "no_lattice";
-        const bool budget = planned < settings.max_pieces;
-        if (!settled && depth < settings.max_depth && budget) {
-            ++planned;
-            Rational middle = (lo + hi) / 2;
-            middle.canonicalize();
-            // S6 below 9/10 walks down: the upper half first, linked to the box before.
-            const bool downward = tracker && tracker->downward;
-            audit(downward ? middle : lo, downward ? hi : middle, depth + 1);
-            audit(downward ? lo : middle, downward ? middle : hi, depth + 1);
-            return;
-        }
-        if (!settled) {
-            chain_broken = family == Family::D14 || family == Family::S6;
-            piece.reason += budget ? " (subdivision floor reached)"
-                                   : " (piece limit " + std::to_string(settings.max_pieces) + " reached)";
-            // A refutation at one exact p of the piece is still certified: try the midpoint
-            // (not for S6, whose lattice is a packing wherever its point exists).
-            Rational middle = (lo + hi) / 2;
-            middle.canonicalize();
-            if (family == Family::S6) {
-                progress_line(lo, hi, piece.outcome);
-                result.pieces.push_back(std::move(piece));
-                return;
-            }
-            BranchTracker copy = tracker ? *tracker : BranchTracker{};
-            copy.previous.reset();  // the midpoint is no end of the previous piece
-            const AuditPiece point = audit_piece(family, middle, middle, tracker ? &copy : nullptr);
-            piece.detail["midpoint_check"] = point.detail;
-            if (point.outcome == "overlapping") {
-                piece.outcome = "overlapping_at_point";
-                piece.witness = point.witness;
-                piece.reason += "; at p = " + rational_text(middle) + " the lattice overlaps (witness in midpoint_check)";
-            }
-        }
-        progress_line(lo, hi, piece.outcome);
-        result.pieces.push_back(std::move(piece));
-    };
+    AuditDriver driver{family, branch, settings, progress, result, tracker, planned};
+    // One segment between ends, its pieces in the order walked.
     auto segment = [&](std::size_t k, bool downward) {
         const long count = counts[k];
+        std::vector<AuditSpan> pieces;
         for (long j = 0; j < count; ++j) {
             const long i = downward ? count - 1 - j : j;
             Rational lo = ends[k] + (ends[k + 1] - ends[k]) * i / count, hi = ends[k] + (ends[k + 1] - ends[k]) * (i + 1) / count;
             lo.canonicalize();
             hi.canonicalize();
-            audit(lo, hi, 0);
+            pieces.push_back(AuditSpan{lo, hi});
         }
+        branch_and_bound(driver, pieces, BranchOptions{});
     };
     if (family != Family::S6) {
         for (std::size_t k = 0; k + 1 < ends.size(); ++k) segment(k, false);
@@ -366,7 +394,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
         if (ends[k] >= anchor) segment(k, false);
     tracker = anchored;
     tracker->downward = true;
-    chain_broken = false;
+    driver.chain_broken = false;
     for (std::size_t k = ends.size() - 1; k-- > 0;)
         if (ends[k + 1] <= anchor) segment(k, true);
     std::sort(result.pieces.begin(), result.pieces.end(),
