@@ -7,6 +7,7 @@
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/arith/decimal.hpp"
 #include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/family_registry.hpp"
 
 namespace superpack::cli {
 
@@ -66,9 +67,7 @@ struct Cell {
 template <class Field, class I = typename Field::Interval>
 Cell family_cell(Family family, const Rational& p, const Field& field, int decimals, Json& entry,
                  std::vector<FamilyLattice<I>>& lattices, std::vector<Outcome>& verdicts) {
-    try {
-        require_in_domain(family, p);
-    } catch (const InputError&) {
+    if (!family_domain(family, p).inside()) {
         entry = Json{{"status", "outside_domain"}, {"domain", family_domain_text(family)}};
         return {"-  (outside domain)"};
     }
