@@ -2,6 +2,7 @@
 // (family_registry.hpp); its KKT system is in local_optimality.hpp, its triples in s6.hpp.
 #include "family_enclosure.hpp"
 
+#include "superpack/arith/contract.hpp"
 #include "superpack/problems/local_optimality.hpp"
 #include "superpack/problems/s6.hpp"
 
@@ -31,13 +32,12 @@ FamilyLattice<I> enclose_s6(Family family, const I& p) {
         return lattice;
     }
     const std::vector<Coefficients>& triples = s6_contact_triples();
-    KrawczykResult<I> root;
-    try {
-        root = isolate_kkt_point(*guess, triples, p);
-    } catch (const std::domain_error& error) {
-        lattice.message = std::string("an enclosure was too wide for a power's contract (") + error.what() + ")";
+    const Contracted<KrawczykResult<I>> isolated = within_contract([&] { return isolate_kkt_point(*guess, triples, p); });
+    if (isolated.status == ContractStatus::too_wide) {
+        lattice.message = isolated.reason();
         return lattice;
     }
+    const KrawczykResult<I>& root = *isolated.value;
     lattice.search.push_back({root.initial_box, root.status, root.box, root.reason});
     if (root.status != RootStatus::unique) {
         lattice.message = "Krawczyk did not prove a unique KKT point near the continued guess (" + root.reason + ")";
