@@ -1,8 +1,9 @@
 // The lattice families, one entry each: everything superpack says about a family apart from
-// its formulas (families.hpp) and its certificate's parameter proof (cert/family_proofs.hpp,
-// the layer above). Commands, the report, `best` and the audit read a family only through
-// its entry, so adding a family is its entry in family_registry.cpp, its enum value, and its
-// own files (equations, src/problems/families/<family>.cpp, its parameter proof).
+// its formulas (families.hpp) and its certificate's parameter proof (a row of the table in
+// src/cert/family_certificate.cpp, the layer above). Commands, the report, `best` and the
+// audit read a family through its entry, so adding a family is its enum value, its entry in
+// family_registry.cpp, its declaration in src/problems/families/family_enclosure.hpp, that
+// row, and its own files (equations, src/problems/families/<family>.cpp, its parameter proof).
 #pragma once
 #include <string>
 #include <vector>
