@@ -7,6 +7,7 @@
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/certificate_partition.hpp"
 #include "superpack/cert/family_certificate.hpp"
+#include "superpack/problems/family_registry.hpp"
 #include "superpack/problems/s6_branch.hpp"
 
 namespace superpack {
@@ -60,7 +61,7 @@ Json audit_certificate(const AuditResult& result) {
     if (result.branch != AuditBranch::published) throw InputError("audit certificates cover the published lattice only");
     const Family family = result.family;
     // O1 and D14 are audited by continuation of their root from p = 1/2 (audit.cpp).
-    const bool continued = family == Family::O1 || family == Family::D14;
+    const bool continued = !family_definition(family).continuation_start.empty();
     if (continued && result.range.lo != Rational(1, 2))
         throw InputError(std::string(family == Family::O1 ? "an " : "a ") + to_string(family) +
                          " audit certificate starts at p = 1/2 (the branch is followed from Minkowski's lattice)");

@@ -4,7 +4,7 @@
 
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/certificate_partition.hpp"
-#include "superpack/problems/s6.hpp"
+#include "superpack/problems/family_registry.hpp"
 
 namespace superpack {
 
@@ -58,10 +58,51 @@ Json d14_proof(const FamilyLattice<I>& lattice, const I& p) {
 // S6: the Krawczyk leaf of the KKT point over (b00, ..., b22, mu1, ..., mu6), the format of the
 // local-optimum kind (NOTES.md 8.9): the box the proof is about and the root box in it.
 template <class I>
-Json s6_proof(const FamilyLattice<I>& lattice) {
+Json s6_proof(const FamilyLattice<I>& lattice, const I&) {
     const RootLeaf<I>& leaf = lattice.search.front();
     return Json{{"kind", "krawczyk"}, {"status", "unique"}, {"box", box_json(leaf.piece)}, {"root", box_json(leaf.root)}};
 }
+
+// O0: its parameter c is a closed form of p, which the checker evaluates itself.
+template <class I>
+Json evaluation_proof(const FamilyLattice<I>&, const I&) {
+    return Json{{"kind", "evaluation"}};
+}
+
+// The certificate side of each family's registry entry (family_registry.hpp), a table of its
+// own because certificates are a layer above the registry: the proof of the family's
+// parameters at p, or why the family has no certificate kind.
+template <class I>
+using ParameterProof = Json (*)(const FamilyLattice<I>& lattice, const I& p);
+
+struct FamilyProof {
+    Family family;
+    ParameterProof<DInterval> on_double;
+    ParameterProof<Ball> on_ball;
+    const char* no_certificate;  // when the family has none
+};
+
+const FamilyProof& family_proof(Family family) {
+    static const std::vector<FamilyProof> proofs{
+        {Family::C0, cubic_proof<DInterval>, cubic_proof<Ball>, nullptr},
+        {Family::C1, cubic_proof<DInterval>, cubic_proof<Ball>, nullptr},
+        {Family::O0, evaluation_proof<DInterval>, evaluation_proof<Ball>, nullptr},
+        {Family::O1, o1_proof<DInterval>, o1_proof<Ball>, nullptr},
+        {Family::D14, d14_proof<DInterval>, d14_proof<Ball>, nullptr},
+        {Family::S6, s6_proof<DInterval>, s6_proof<Ball>, nullptr},
+        // The insertion's basis is Minkowski's scaled by a root of p (Eq. 10), not exact: its
+        // lattice is certified through the star-lattice-check kind of an exact basis only.
+        {Family::MinkowskiInsertion, nullptr, nullptr,
+         "--certificate: no certificate kind for the family minkowski-insertion (its basis is not exact); "
+         "check-lattice --family minkowski-insertion --certificate certifies its exact basis"},
+    };
+    for (const FamilyProof& proof : proofs)
+        if (proof.family == family) return proof;
+    throw std::logic_error("a family without its parameter proof in family_certificate.cpp");
+}
+
+ParameterProof<DInterval> parameter_proof(const FamilyProof& proof, const DInterval&) { return proof.on_double; }
+ParameterProof<Ball> parameter_proof(const FamilyProof& proof, const Ball&) { return proof.on_ball; }
 
 bool canonical(const Coefficients& c) {
     for (long x : c)
@@ -75,31 +116,20 @@ template <class I>
 Json family_parameter_proof(const FamilyLattice<I>& lattice, const I& p) {
     if (lattice.status != Outcome::proved)
         throw std::runtime_error(std::string("certificate: ") + to_string(lattice.family) + " is not certified at this p");
-    switch (lattice.family) {
-        case Family::C0:
-        case Family::C1: return cubic_proof(lattice, p);
-        case Family::O0: return Json{{"kind", "evaluation"}};
-        case Family::O1: return o1_proof(lattice, p);
-        case Family::D14: return d14_proof(lattice, p);
-        case Family::S6: return s6_proof(lattice);
-        case Family::MinkowskiInsertion: break;  // refused by require_certificate_kind
-    }
-    throw std::logic_error("unknown family");
+    const auto proof = parameter_proof(family_proof(lattice.family), p);
+    if (!proof) throw std::logic_error("certificate: no certificate kind for " + std::string(to_string(lattice.family)));
+    return proof(lattice, p);
 }
 
 void require_certificate_kind(const Rational& p, std::optional<Family> family) {
     if (family) require_in_domain(*family, p);  // the first problem named is the domain's
-    // The insertion's basis is Minkowski's scaled by a root of p (Eq. 10), not exact: its
-    // lattice is certified through the star-lattice-check kind of an exact basis only.
-    if (family == Family::MinkowskiInsertion)
-        throw InputError("--certificate: no certificate kind for the family minkowski-insertion (its basis is not exact); "
-                         "check-lattice --family minkowski-insertion --certificate certifies its exact basis");
+    if (family && family_proof(*family).no_certificate) throw InputError(family_proof(*family).no_certificate);
 }
 
 Json family_definition_json(Family family) {
-    if (family != Family::S6) return Json::object();
+    if (!family_definition(family).defined_by_contact_pairs) return Json::object();
     Json pairs = Json::array();
-    for (const Coefficients& c : s6_contact_triples()) pairs.push_back(coefficients_json(c));
+    for (const Coefficients& c : family_definition(family).contact_triples) pairs.push_back(coefficients_json(c));
     return Json{{"contact_pairs", pairs}};
 }
 

@@ -5,8 +5,10 @@
 
 #include "common.hpp"
 #include "superpack/cert/atomic_file.hpp"
+#include "superpack/arith/contract.hpp"
 #include "superpack/arith/decimal.hpp"
 #include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/family_registry.hpp"
 
 namespace superpack::cli {
 
@@ -66,37 +68,34 @@ struct Cell {
 template <class Field, class I = typename Field::Interval>
 Cell family_cell(Family family, const Rational& p, const Field& field, int decimals, Json& entry,
                  std::vector<FamilyLattice<I>>& lattices, std::vector<Outcome>& verdicts) {
-    try {
-        require_in_domain(family, p);
-    } catch (const InputError&) {
+    if (!family_domain(family, p).inside()) {
         entry = Json{{"status", "outside_domain"}, {"domain", family_domain_text(family)}};
         return {"-  (outside domain)"};
     }
-    try {
+    const Contracted<Cell> cell = within_contract([&] {
         FamilyLattice<I> lattice = enclose_family(family, p, field);
         const LatticeCheck<I> check = check_family_lattice(lattice, field.rational(p));
         entry = family_json(lattice);
         entry["packing"] = lattice_check_json(check, false);
-        Cell cell;
+        Cell decided;
         if (lattice.phi) {
             const DecimalEnclosure text = to_fixed(*lattice.phi, decimals);
             const char* mark = check.verdict == Outcome::proved ? " " : check.verdict == Outcome::refuted ? "x" : "?";
-            cell = {"[" + text.lo + ", " + text.hi + "]" + mark, check.verdict == Outcome::undecided};
+            decided = {"[" + text.lo + ", " + text.hi + "]" + mark, check.verdict == Outcome::undecided};
         } else if (lattice.status == Outcome::refuted) {
-            cell = {"-  (no lattice)"};
+            decided = {"-  (no lattice)"};
         } else {
-            cell = {"?  (undecided)", true};
+            decided = {"?  (undecided)", true};
         }
         lattices.push_back(std::move(lattice));
         verdicts.push_back(check.verdict);
-        return cell;
-    } catch (const std::domain_error& error) {
-        // A contract refusal at this precision leaves this cell undecided, not the report.
-        entry = Json{{"status", "undecided"},
-                     {"message", std::string("undecided at this precision (") + error.what() +
-                                     ": an enclosure is too wide for the function's contract)"}};
-        return {"?  (undecided)", true};
-    }
+        return decided;
+    });
+    if (cell.status == ContractStatus::held) return *cell.value;
+    // A contract refusal at this precision leaves this cell undecided, not the report.
+    entry = Json{{"status", "undecided"},
+                 {"message", "undecided at this precision (" + cell.refusal + ": an enclosure is too wide for the function's contract)"}};
+    return {"?  (undecided)", true};
 }
 
 int run(const ReportOptions& options, bool default_output) {

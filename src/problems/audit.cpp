@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "superpack/problems/family_registry.hpp"
 #include "superpack/problems/s6.hpp"
 #include "superpack/problems/s6_branch.hpp"
 #include "superpack/solve/branch_and_bound.hpp"
@@ -10,20 +11,6 @@
 namespace superpack {
 
 namespace {
-
-// p*_o = ln 3 / ln 4 lies in (792481/10^6, 792482/10^6); checked in interval arithmetic on use.
-const Rational crossover_below(792481, 1000000);
-const Rational crossover_above(792482, 1000000);
-// S6's default range (claimed_audit_range); it must hold 9/10, where the chain is anchored.
-const std::pair<Rational, Rational> s6_default_range{Rational(89, 100), Rational(91, 100)};
-
-void require_crossover_bracket() {
-    const DoubleField field;
-    const DInterval crossover = log(field.integer(3)) / log(field.integer(4));
-    if (!certainly_less(field.rational(crossover_below), crossover) ||
-        !certainly_less(crossover, field.rational(crossover_above)))
-        throw std::logic_error("the rational bracket of p*_o = ln3/ln4 is wrong");
-}
 
 DInterval piece_interval(const Rational& lo, const Rational& hi) {
     const DoubleField field;
@@ -279,40 +266,12 @@ struct AuditDriver {
 }  // namespace
 
 AuditRange claimed_audit_range(Family family) {
-    require_crossover_bracket();
-    const std::string bracket = "p*_o = ln3/ln4 is irrational: the piece [792481/10^6, 792482/10^6] brackets it "
-                                "(checked in interval arithmetic) and is audited as one piece";
-    switch (family) {
-        case Family::C0:
-        case Family::C1: return {Rational(1), Rational(10), {}, "the claim is p >= 1; audited on [1, 10]"};
-        case Family::O0: return {crossover_below, Rational(1), {crossover_above}, "claimed [p*_o, 1]; " + bracket};
-        case Family::O1: return {Rational(1, 2), crossover_above, {crossover_below}, "claimed [1/2, p*_o]; " + bracket};
-        case Family::D14:
-            return {Rational(1, 2), crossover_above, {crossover_below},
-                    "Dostert and Vallentin prove (1/2, 0.79] and conjecture [1/2, p*_o]; " + bracket};
-        case Family::S6:
-            return {s6_default_range.first, s6_default_range.second, {},
-                    "S6 is defined on (p*_o, 1); the default audits a range about the point proof at p = 9/10 that runs in "
-                    "seconds (audit --family S6 --p-range a:b for others; NOTES.md 4.2)"};
-        case Family::MinkowskiInsertion:
-            throw InputError("audit: minkowski-insertion is not audited yet: its lattice does not depend on p, but the "
-                             "star-body test below p = 1/2 takes one exact p (check-lattice --family minkowski-insertion "
-                             "--p P decides each p)");
-    }
-    return {};
+    const FamilyDefinition& definition = family_definition(family);
+    if (!definition.audit_range) throw InputError(definition.not_audited);
+    return definition.audit_range();
 }
 
-AuditSettings default_audit_settings(Family family) {
-    // O1's root search (two unknowns) costs grow fast with the width of p: keep pieces ~7e-4 and do not
-    // bisect (an undecided piece still gets the certified midpoint check).
-    if (family == Family::O1) return {300, 3};
-    // D14 follows its root by continuation (a small Krawczyk box per piece, no search), so the
-    // pieces may be wide; they only shrink where the root nears the fold at p*_o.
-    if (family == Family::D14) return {32, 12};
-    // S6: the mean-value Krawczyk proves pieces 1.25e-4 wide near 9/10, not 2.5e-4 (NOTES.md 4.2).
-    if (family == Family::S6) return {160, 8};
-    return {16, 12};
-}
+AuditSettings default_audit_settings(Family family) { return family_definition(family).audit_settings; }
 
 AuditResult audit_family(Family family, const AuditRange& range, const AuditSettings& settings, AuditBranch branch,
                          const AuditProgress& progress) {
@@ -323,7 +282,7 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     const Rational anchor = s6_seed_p();
     if (family == Family::S6) {
         // Sound but stricter than p*_o < p < 1: the rational ends are compared exactly.
-        if (range.lo < crossover_above || !(range.hi < Rational(1)))
+        if (range.lo < octahedral_crossover_above() || !(range.hi < Rational(1)))
             throw InputError("an S6 audit range must lie in [792482/10^6, 1) (S6 is defined on (p*_o, 1))");
         if (range.lo > anchor || range.hi < anchor)
             throw InputError("an S6 audit range must hold p = 9/10, where the branch is anchored by its point proof");
@@ -336,10 +295,11 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     std::sort(ends.begin(), ends.end());
     const Rational total = range.hi - range.lo;
     std::optional<BranchTracker> tracker;
-    if (family == Family::O1 || family == Family::D14) {
-        if (family == Family::D14) tracker = BranchTracker{{1.0 / 3, 1.0 / 6, 1.0 / 2}, std::nullopt, std::nullopt, false};
-        else if (branch == AuditBranch::published) tracker = BranchTracker{{1.0 / 6, 2.0 / 3}, std::nullopt, std::nullopt, false};
-        else tracker = BranchTracker{{5.0 / 12, 1.0 / 6}, std::nullopt, std::nullopt, false};
+    const std::vector<double>& continuation_start = family_definition(family).continuation_start;
+    if (!continuation_start.empty()) {
+        // O1's second root starts at (q, s) = (5/12, 1/6).
+        const std::vector<double> start = branch == AuditBranch::published ? continuation_start : std::vector{5.0 / 12, 1.0 / 6};
+        tracker = BranchTracker{start, std::nullopt, std::nullopt, false};
         if (range.lo != Rational(1, 2)) {
             // Start the continuation from the complete root search at the exact left end (D14:
             // its branch root comes first).

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "superpack/problems/family_registry.hpp"
+
 namespace superpack {
 
 namespace {
@@ -92,9 +94,7 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
     // Below 1/2 the convex families are outside their domains and the insertion is the
     // published lattice; at 1/2 it is Minkowski's octahedron packing, as O1 is.
     for (Family family : convex_families_and_insertion()) {
-        try {
-            require_in_domain(family, p);
-        } catch (const InputError&) {
+        if (!family_domain(family, p).inside()) {
             best.outside_domain.push_back(to_string(family));
             continue;
         }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "superpack/arith/contract.hpp"
 #include "superpack/problems/critical_contraction.hpp"
 
 namespace superpack {
@@ -159,24 +160,26 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
     BoxDecision decision{std::nullopt, start};
     ChartBox<I>& box = decision.box;
     std::size_t round_start = trace ? trace->size() : 0;
-    try {
+    // Whether the rounds decided the box by the first-order tests alone.
+    const Contracted<bool> rounds = within_contract([&] {
         for (int round = 1;; ++round) {
             if (trace) round_start = trace->size();
             ChartPoint x = box.x;
             Basis<I> basis;
             decision.reason = first_order_tests(box, x, basis, context, trace);
-            if (decision.reason) return decision;
+            if (decision.reason) return true;
             bool shrunk = false;
             for (int k = 0; k < chart_dimension; ++k)
                 shrunk = shrunk || width_upper(x[k]) < (1 - worth_another_round) * width_upper(box.x[k]);
             if (!shrunk || round == contraction_rounds) {
                 decision.reason = lattice_tests(box, basis, context, trace);
                 box.x = x;
-                break;
+                return false;
             }
             box.x = x;
         }
-    } catch (const std::domain_error&) {
+    });
+    if (rounds.status == ContractStatus::too_wide) {
         // A power's contract refused an enclosure (it cannot on this chart, where every base of
         // a fractional power is a coordinate or a sum in [1, 3]): split, and at the floor undecided.
         // The round that threw leaves nothing in the trace: the split is of the box it started with.
@@ -184,6 +187,7 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
         if (widest_width(box.x) < context.min_width) decision.reason = BoxReason::undecided_contract;
         return decision;
     }
+    if (*rounds.value) return decision;
     if (!decision.reason && widest_width(box.x) < context.min_width) decision.reason = BoxReason::undecided_width;
     return decision;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "superpack/arith/contract.hpp"
 #include "superpack/solve/krawczyk.hpp"
 
 namespace superpack {
@@ -113,12 +114,10 @@ LocalOptimum<I> certify_local_optimum(const DoubleBasis& guess, const std::vecto
         result.reason = "not decided at p = 1/2: the norm is not differentiable there (a polytope)";
         return result;
     }
-    try {
-        return certify_smooth_local_optimum(guess, contacts, p);
-    } catch (const std::domain_error& error) {
-        result.reason = std::string("an enclosure was too wide for a power's contract (") + error.what() + ")";
-        return result;
-    }
+    Contracted<LocalOptimum<I>> smooth = within_contract([&] { return certify_smooth_local_optimum(guess, contacts, p); });
+    if (smooth.status == ContractStatus::held) return std::move(*smooth.value);
+    result.reason = smooth.reason();
+    return result;
 }
 
 template <class I>

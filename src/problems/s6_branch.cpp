@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "superpack/arith/contract.hpp"
+
 #include "superpack/problems/local_optimality.hpp"
 #include "superpack/problems/s6.hpp"
 
@@ -33,11 +35,10 @@ std::optional<S6Branch> s6_anchor(std::string& failure) {
 
 bool s6_linked(const std::vector<DInterval>& box, const std::vector<DInterval>& previous, const Rational& p) {
     const DInterval at = DoubleField{}.rational(p);
-    try {
-        return unique_root_within([&](const auto& x) { return kkt_equations(x, triples(), at); }, box, previous);
-    } catch (const std::domain_error&) {
-        return false;
-    }
+    // A refused enclosure proves no link.
+    return within_contract([&] {
+               return unique_root_within([&](const auto& x) { return kkt_equations(x, triples(), at); }, box, previous);
+           }).value.value_or(false);
 }
 
 S6Piece s6_piece(S6Branch& branch, const Rational& lo, const Rational& hi, const Rational& shared) {
@@ -62,13 +63,13 @@ S6Piece s6_piece(S6Branch& branch, const Rational& lo, const Rational& hi, const
             const double radius = scale * w + 1e-10 * std::max(1.0, std::fabs(value));
             box.push_back(from_doubles(field.integer(0), value - radius, value + radius));
         }
-        KrawczykResult<DInterval> proof;
-        try {
-            proof = krawczyk_isolate_in_parameter(equations, box, p, p0, 0.0, 60);
-        } catch (const std::domain_error& error) {
-            piece.reason = std::string("an enclosure was too wide for a power's contract (") + error.what() + ")";
+        const Contracted<KrawczykResult<DInterval>> isolated =
+            within_contract([&] { return krawczyk_isolate_in_parameter(equations, box, p, p0, 0.0, 60); });
+        if (isolated.status == ContractStatus::too_wide) {
+            piece.reason = isolated.reason();
             continue;
         }
+        const KrawczykResult<DInterval>& proof = *isolated.value;
         if (proof.status != RootStatus::unique) {
             piece.reason = "Krawczyk did not prove one KKT point for every p of the piece (" + proof.reason + ")";
             continue;
