@@ -6,7 +6,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "superpack/problems/audit.hpp"
+#include "superpack/problems/families/audit.hpp"
 
 using namespace superpack;
 

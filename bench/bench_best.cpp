@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "superpack/problems/best.hpp"
+#include "superpack/problems/best/best.hpp"
 
 using namespace superpack;
 

@@ -7,7 +7,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "superpack/problems/critical.hpp"
+#include "superpack/problems/critical/critical.hpp"
 
 using namespace superpack;
 

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "superpack/problems/crossover.hpp"
+#include "superpack/problems/crossover/crossover.hpp"
 
 using namespace superpack;
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "superpack/problems/families.hpp"
+#include "superpack/problems/families/families.hpp"
 
 using namespace superpack;
 

@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "superpack/problems/superdisk.hpp"
+#include "superpack/problems/superdisk/superdisk.hpp"
 
 using namespace superpack;
 

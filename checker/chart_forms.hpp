@@ -1,6 +1,6 @@
 // The chart of the critical-lattice claim (NOTES.md 12.2) and the first-order forms over one
 // chart box (12.3), written again for the checker from the producer's formulas
-// (include/superpack/problems/critical_chart.hpp, src/problems/critical_forms.cpp,
+// (include/superpack/problems/critical/critical_chart.hpp, src/problems/critical/critical_forms.cpp,
 // critical_contraction.cpp, critical_linear.cpp), with the same expression trees in the same
 // order, so that by inclusion isotonicity each enclosure here lies inside the producer's up to
 // the last bits: every fact the producer proved about a box the checker proves again.

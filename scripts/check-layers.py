@@ -5,6 +5,7 @@ The producer's layers, each a folder under include/superpack/ and src/, may incl
 their own layer and the ones below it:   arith -> solve -> geometry -> problems -> cert -> cli
 -> python (the Python module, which runs the command lines of cli).
 sim/ (floating point only) may include arith, solve and geometry, and only cli includes sim.
+problems/ is one room per feature (ROOMS below): a room includes its own and earlier rooms only.
 checker/ includes nothing of the repository but checker/ itself: it is the independent side.
 tests/ and bench/ may include anything. Libraries: the checker uses none of the producer's
 arithmetic libraries (Arb/FLINT, Boost, Eigen), and Eigen is seen only by the one file that
@@ -24,6 +25,12 @@ import subprocess
 import sys
 
 ORDER = ["arith", "solve", "geometry", "problems", "cert", "cli", "python"]
+# problems/ is one room per feature, a folder in include/superpack/problems/ and src/problems/; a
+# room includes its own and earlier rooms only. The floating-point guesses come first (the
+# search and the families both use them), then the KKT system and local optimality (S6 is
+# defined by it), the families with their audit, the features on top of them, best (which
+# certifies what the search guesses among the families) and critical (measured against best).
+ROOMS = ["guess", "optimality", "families", "crossover", "superdisk", "star", "periodic", "best", "critical"]
 SIM_MAY_INCLUDE = {"arith", "solve", "geometry", "sim"}
 CHECKER_USERS = {"cert", "cli", "tests", "bench"}
 
@@ -42,6 +49,26 @@ def layer_of(path, source):
     if parts[0] in ("checker", "tests", "bench", "python"):
         return parts[0]
     return "repository"
+
+
+def room_of(path, source):
+    """The room of a file of problems/ (the folder under include/superpack/problems/ or
+    src/problems/), or None."""
+    parts = os.path.relpath(os.path.realpath(path), os.path.realpath(source)).split(os.sep)
+    if parts[:3] == ["include", "superpack", "problems"] and len(parts) > 4:
+        return parts[3]
+    if parts[:2] == ["src", "problems"] and len(parts) > 3:
+        return parts[2]
+    return None
+
+
+def room_allowed(path, included_path, source):
+    """May a file of problems/ include a header of problems/? Within the rooms' order only; a
+    file directly in problems/ (no room) is refused."""
+    including, included = room_of(path, source), room_of(included_path, source)
+    if including not in ROOMS or included not in ROOMS:
+        return False
+    return ROOMS.index(included) <= ROOMS.index(including)
 
 
 def allowed(including, included):
@@ -111,6 +138,10 @@ def violations(graph, source):
             if not allowed(including, included):
                 lines.append(f"{os.path.relpath(path, source)} ({including}) includes "
                              f"{os.path.relpath(os.path.realpath(included_path), source)} ({included})")
+            elif including == included == "problems" and not room_allowed(path, included_path, source):
+                lines.append(f"{os.path.relpath(path, source)} (room {room_of(path, source)}) includes "
+                             f"{os.path.relpath(os.path.realpath(included_path), source)} "
+                             f"(room {room_of(included_path, source)})")
     return lines
 
 
@@ -176,7 +207,7 @@ def self_test():
     """The rules reject what they must: a check that cannot fail is no check."""
     source = "/repository"
     graph = {
-        "/repository/src/arith/a.cpp": ["/repository/include/superpack/problems/families.hpp"],
+        "/repository/src/arith/a.cpp": ["/repository/include/superpack/problems/families/families.hpp"],
         "/repository/include/superpack/geometry/g.hpp": ["/repository/include/superpack/cert/c.hpp"],
         "/repository/checker/real.cpp": ["/repository/include/superpack/arith/interval.hpp"],
         "/repository/checker/claim.cpp": ["/repository/src/arith/arb_support.hpp"],
@@ -193,10 +224,13 @@ def self_test():
         "/repository/include/superpack/arith/interval.hpp": ["/usr/include/mpfr.h"],
         "/repository/include/superpack/arith/mpfr_bounds.hpp": ["/usr/include/mpfr.h"],
         "/repository/src/arith/ok.cpp": ["/usr/include/mpfr.h", "/usr/include/flint/arb.h"],
+        "/repository/src/problems/guess/search.cpp": ["/repository/include/superpack/problems/best/best.hpp"],
+        "/repository/src/problems/best/ok.cpp": ["/repository/include/superpack/problems/families/families.hpp",
+                                                 "/repository/src/problems/best/private.hpp"],
     }
     permitted = ("ok.cpp", "approximate_inverse.cpp", "mpfr_bounds.hpp")
     found = violations(graph, source)
-    expected = 10
+    expected = 11
     if len(found) != expected or any(line.split(" ")[0].endswith(permitted) for line in found):
         print(f"check-layers self-test: expected {expected} violations, none in {permitted}, got:", *found,
               sep="\n  ")

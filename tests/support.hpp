@@ -6,7 +6,7 @@
 #include <string>
 
 #include "superpack/arith/arb_access.hpp"
-#include "superpack/problems/families.hpp"
+#include "superpack/problems/families/families.hpp"
 
 namespace superpack::test {
 

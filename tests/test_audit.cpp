@@ -1,5 +1,5 @@
 // The audit driver on short ranges with known answers (the full ranges run in bench/bench_audit).
-#include "superpack/problems/audit.hpp"
+#include "superpack/problems/families/audit.hpp"
 #include "support.hpp"
 
 using namespace superpack;

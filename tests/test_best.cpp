@@ -3,7 +3,7 @@
 // that finds, on its own, D14's seven-pair lattice at p = 0.6, where no family of Jiao et al. is
 // a packing; local optimality certified where it holds and refused at a saddle.
 #include "support.hpp"
-#include "superpack/problems/best.hpp"
+#include "superpack/problems/best/best.hpp"
 
 using namespace superpack;
 using namespace superpack::test;

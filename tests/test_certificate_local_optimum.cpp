@@ -14,7 +14,7 @@
 #include "checker/render.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/cert/local_optimum_certificate.hpp"
-#include "superpack/problems/best.hpp"
+#include "superpack/problems/best/best.hpp"
 #include "support.hpp"
 #include "tamper.hpp"
 

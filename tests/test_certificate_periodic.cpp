@@ -17,7 +17,7 @@
 #include "checker/render.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/cert/periodic_certificate.hpp"
-#include "superpack/problems/periodic_packing.hpp"
+#include "superpack/problems/periodic/periodic_packing.hpp"
 #include "support.hpp"
 #include "tamper.hpp"
 

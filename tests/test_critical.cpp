@@ -6,8 +6,8 @@
 #include <set>
 
 #include "support.hpp"
-#include "superpack/problems/critical.hpp"
-#include "superpack/problems/critical_contraction.hpp"
+#include "superpack/problems/critical/critical.hpp"
+#include "superpack/problems/critical/critical_contraction.hpp"
 
 using namespace superpack;
 

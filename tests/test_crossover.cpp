@@ -1,7 +1,7 @@
 #include <cmath>
 
 #include "crossover_reference.hpp"
-#include "superpack/problems/crossover.hpp"
+#include "superpack/problems/crossover/crossover.hpp"
 
 using namespace superpack;
 using namespace superpack::test;

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
 #include "support.hpp"
 
 using namespace superpack;

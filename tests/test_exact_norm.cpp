@@ -1,7 +1,7 @@
 // The exact contact test ||v||_(2p) = 2 (NOTES.md 5.3): decided from the structure of v where it
 // can be, by exact integers otherwise, and without huge numbers at large 2p.
 #include "superpack/geometry/exact_norm.hpp"
-#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
 #include "support.hpp"
 
 using namespace superpack;

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <set>
 
-#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
 #include "support.hpp"
 
 using namespace superpack;

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "checker/verifier.hpp"
-#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
 #include "superpack/cert/lattice_certificate.hpp"
 #include "support.hpp"
 #include "tamper.hpp"

@@ -1,11 +1,11 @@
-// The proof of a periodic packing of rotated superballs (problems/periodic_packing.hpp): exact
+// The proof of a periodic packing of rotated superballs (problems/periodic/periodic_packing.hpp): exact
 // rotations, the close-pair enumeration, planes that prove touching pairs, the scale that
 // separates overlapping ones, densities against mpmath (tests/data/golden.json), two backends
 // that agree, and random configurations whose proved packings sampled points never refute.
 #include <cmath>
 #include <random>
 
-#include "superpack/problems/periodic_packing.hpp"
+#include "superpack/problems/periodic/periodic_packing.hpp"
 #include "support.hpp"
 
 using namespace superpack;

@@ -5,9 +5,9 @@
 #include <set>
 
 #include "cli_run.hpp"
-#include "superpack/problems/best.hpp"
-#include "superpack/problems/family_lattice_check.hpp"
-#include "superpack/problems/s6.hpp"
+#include "superpack/problems/best/best.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
+#include "superpack/problems/families/s6_definition.hpp"
 #include "support.hpp"
 
 using namespace superpack;

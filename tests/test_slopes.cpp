@@ -1,5 +1,5 @@
 #include "crossover_reference.hpp"
-#include "superpack/problems/crossover.hpp"
+#include "superpack/problems/crossover/crossover.hpp"
 
 using namespace superpack;
 using namespace superpack::test;

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "cli_run.hpp"
-#include "superpack/problems/star_disk.hpp"
+#include "superpack/problems/star/star_disk.hpp"
 #include "support.hpp"
 
 using namespace superpack;

@@ -8,7 +8,7 @@
 
 #include "cli_run.hpp"
 #include "superpack/geometry/lattice.hpp"
-#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
 #include "support.hpp"
 
 using namespace superpack;

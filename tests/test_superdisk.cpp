@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "support.hpp"
-#include "superpack/problems/superdisk.hpp"
+#include "superpack/problems/superdisk/superdisk.hpp"
 
 using namespace superpack;
 using namespace superpack::test;

@@ -7,8 +7,8 @@
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/certificate_partition.hpp"
 #include "superpack/cert/family_certificate.hpp"
-#include "superpack/problems/family_registry.hpp"
-#include "superpack/problems/s6_branch.hpp"
+#include "superpack/problems/families/family_registry.hpp"
+#include "superpack/problems/families/s6_branch.hpp"
 
 namespace superpack {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "superpack/cert/certificate_partition.hpp"
-#include "superpack/problems/critical_chart.hpp"
+#include "superpack/problems/critical/critical_chart.hpp"
 
 namespace superpack {
 

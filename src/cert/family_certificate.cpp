@@ -4,7 +4,7 @@
 
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/certificate_partition.hpp"
-#include "superpack/problems/family_registry.hpp"
+#include "superpack/problems/families/family_registry.hpp"
 
 namespace superpack {
 

@@ -7,7 +7,7 @@
 
 #include "common.hpp"
 #include "superpack/cert/atomic_file.hpp"
-#include "superpack/problems/audit.hpp"
+#include "superpack/problems/families/audit.hpp"
 #include "superpack/cert/audit_certificate.hpp"
 
 namespace superpack::cli {

@@ -1,6 +1,6 @@
 // superpack best --p P [--digits D] [--json] [--certificate FILE] [--seed S] [--starts N]
 // superpack best --scan a:b:h [--csv] [--plot FILE.png] [--digits D] [--seed S] [--starts N]
-// The densest lattice packing of the superball at p that superpack certifies (problems/best.hpp).
+// The densest lattice packing of the superball at p that superpack certifies (problems/best/best.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,7 +14,7 @@
 #include "superpack/cert/family_certificate.hpp"
 #include "superpack/cert/local_optimum_certificate.hpp"
 #include "superpack/cert/star_lattice_certificate.hpp"
-#include "superpack/problems/best.hpp"
+#include "superpack/problems/best/best.hpp"
 
 namespace superpack::cli {
 

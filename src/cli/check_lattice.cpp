@@ -9,7 +9,7 @@
 #include "superpack/cert/audit_certificate.hpp"
 #include "superpack/cert/family_certificate.hpp"
 #include "superpack/cert/star_lattice_certificate.hpp"
-#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
 
 namespace superpack::cli {
 

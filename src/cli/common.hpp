@@ -11,7 +11,7 @@
 
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/output_header.hpp"
-#include "superpack/problems/family_json.hpp"
+#include "superpack/problems/families/family_json.hpp"
 
 namespace superpack::cli {
 

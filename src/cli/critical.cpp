@@ -2,7 +2,7 @@
 //                    [--certificate FILE] [--json]
 // superpack critical --merge FILE... [--json]
 // superpack critical --cover CERTIFICATE... --split K --certificate FILE [--threads N] [--json]
-// A certified upper bound on the lattice packing density at p (problems/critical.hpp, NOTES 12),
+// A certified upper bound on the lattice packing density at p (problems/critical/critical.hpp, NOTES 12),
 // run whole or in shards whose JSON documents --merge sums into the whole domain's result.
 #include <chrono>
 #include <filesystem>
@@ -12,7 +12,7 @@
 #include "critical_merge.hpp"
 #include "superpack/arith/enclosure_json.hpp"
 #include "superpack/cert/critical_certificate.hpp"
-#include "superpack/problems/critical.hpp"
+#include "superpack/problems/critical/critical.hpp"
 
 namespace superpack::cli {
 

@@ -6,7 +6,7 @@
 
 #include "superpack/arith/enclosure_json.hpp"
 #include "superpack/cert/critical_certificate.hpp"
-#include "superpack/problems/critical.hpp"
+#include "superpack/problems/critical/critical.hpp"
 
 namespace superpack::cli {
 

@@ -6,7 +6,7 @@
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/crossover_certificate.hpp"
-#include "superpack/problems/crossover_json.hpp"
+#include "superpack/problems/crossover/crossover_json.hpp"
 
 namespace superpack::cli {
 

@@ -7,7 +7,7 @@
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/family_certificate.hpp"
-#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
 
 namespace superpack::cli {
 

@@ -1,5 +1,5 @@
 // What `simulate` and `md` do with a simulation's end state: round it to exact rationals, prove
-// it a packing (problems/periodic_packing.hpp, with sim's separating planes as guesses), compare
+// it a packing (problems/periodic/periodic_packing.hpp, with sim's separating planes as guesses), compare
 // it with the best lattice superpack certifies at p, and write it to the files people open.
 // Floating point guesses, intervals prove: a bad guess costs density, never soundness.
 #pragma once
@@ -7,8 +7,8 @@
 #include <string>
 
 #include "common.hpp"
-#include "superpack/problems/best.hpp"
-#include "superpack/problems/periodic_packing.hpp"
+#include "superpack/problems/best/best.hpp"
+#include "superpack/problems/periodic/periodic_packing.hpp"
 #include "superpack/sim/periodic_configuration.hpp"
 
 namespace superpack::cli {

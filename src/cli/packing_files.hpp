@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "superpack/problems/periodic_packing.hpp"
+#include "superpack/problems/periodic/periodic_packing.hpp"
 
 namespace superpack::cli {
 

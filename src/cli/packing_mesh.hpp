@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "superpack/problems/periodic_packing.hpp"
+#include "superpack/problems/periodic/periodic_packing.hpp"
 #include "superpack/sim/vector3.hpp"
 
 namespace superpack::cli {

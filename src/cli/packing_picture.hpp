@@ -8,7 +8,7 @@
 #include <string>
 
 #include "superpack/arith/interval.hpp"
-#include "superpack/problems/periodic_packing.hpp"
+#include "superpack/problems/periodic/periodic_packing.hpp"
 
 namespace superpack::cli {
 

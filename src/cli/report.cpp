@@ -7,8 +7,8 @@
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/arith/contract.hpp"
 #include "superpack/arith/decimal.hpp"
-#include "superpack/problems/family_lattice_check.hpp"
-#include "superpack/problems/family_registry.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
+#include "superpack/problems/families/family_registry.hpp"
 
 namespace superpack::cli {
 

@@ -6,8 +6,8 @@
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/superdisk_certificate.hpp"
-#include "superpack/problems/star_disk.hpp"
-#include "superpack/problems/superdisk.hpp"
+#include "superpack/problems/star/star_disk.hpp"
+#include "superpack/problems/superdisk/superdisk.hpp"
 
 namespace superpack::cli {
 
@@ -86,7 +86,7 @@ Json report_json(const SuperdiskReport<I>& report) {
 
 const char* const no_optimality = "no optimality claimed: Fejes Toth's theorem and the inscribed-hexagon reduction need a convex disk";
 
-// Below 1/2: the densest lattice the search certifies (problems/star_disk.hpp).
+// Below 1/2: the densest lattice the search certifies (problems/star/star_disk.hpp).
 template <class I>
 Json concave_json(const StarDiskLattice<I>& lattice) {
     Json result{{"status", lattice.status == Outcome::proved ? "certified" : "undecided"},

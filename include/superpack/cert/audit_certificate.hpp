@@ -8,7 +8,7 @@
 // The proofs embed the family's parameter proof (family_parameter_proof) and the enumeration
 // bound with the contact vectors; the checker redoes the enumeration on its own basis.
 #pragma once
-#include "superpack/problems/audit.hpp"
+#include "superpack/problems/families/audit.hpp"
 #include "superpack/cert/certificate.hpp"
 
 namespace superpack {

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "superpack/problems/families.hpp"
+#include "superpack/problems/families/families.hpp"
 #include "superpack/cert/output_header.hpp"
 
 namespace superpack {

@@ -7,7 +7,7 @@
 // checker replays box by box in its own arithmetic.
 #pragma once
 #include "superpack/cert/certificate.hpp"
-#include "superpack/problems/critical.hpp"
+#include "superpack/problems/critical/critical.hpp"
 
 namespace superpack {
 

@@ -10,7 +10,7 @@
 // a proof.
 #pragma once
 #include "superpack/cert/certificate.hpp"
-#include "superpack/problems/crossover.hpp"
+#include "superpack/problems/crossover/crossover.hpp"
 
 namespace superpack {
 

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "superpack/cert/certificate.hpp"
-#include "superpack/problems/family_lattice_check.hpp"
+#include "superpack/problems/families/family_lattice_check.hpp"
 
 namespace superpack {
 

@@ -7,7 +7,7 @@
 // weight rho of the second-order condition, and the lattice check's enumeration on the root box.
 #pragma once
 #include "superpack/cert/certificate.hpp"
-#include "superpack/problems/local_optimality.hpp"
+#include "superpack/problems/optimality/local_optimality.hpp"
 
 namespace superpack {
 

@@ -1,9 +1,9 @@
 // The "periodic-packing" certificate of `superpack simulate`: the exact configuration proved by
-// problems/periodic_packing.hpp, with one separating normal per close pair; the checker
+// problems/periodic/periodic_packing.hpp, with one separating normal per close pair; the checker
 // (checker/claim_periodic_packing.cpp) enumerates the close pairs itself and replays each plane.
 #pragma once
 #include "superpack/cert/certificate.hpp"
-#include "superpack/problems/periodic_packing.hpp"
+#include "superpack/problems/periodic/periodic_packing.hpp"
 
 namespace superpack {
 

@@ -6,7 +6,7 @@
 // and the witness lattice giving the upper bound. NOTES.md sections 7 and 8.6.
 #pragma once
 #include "superpack/cert/certificate.hpp"
-#include "superpack/problems/superdisk.hpp"
+#include "superpack/problems/superdisk/superdisk.hpp"
 
 namespace superpack {
 

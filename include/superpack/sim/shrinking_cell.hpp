@@ -6,7 +6,7 @@
 // cell must also pass an isobaric Metropolis test at a pressure that rises through the run (so
 // the start anneals, and the end only compresses). Step sizes follow the acceptance rates; the
 // densest state met is the result. Floating point only: the end state is a guess that
-// problems/periodic_packing.hpp proves, or scales up until it can.
+// problems/periodic/periodic_packing.hpp proves, or scales up until it can.
 #pragma once
 #include <cstdint>
 #include <functional>

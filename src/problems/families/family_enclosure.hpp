@@ -3,7 +3,7 @@
 // template over the interval type, declared here and instantiated for DInterval and Ball in
 // its own file, so that the registry (family_registry.cpp) can point at it.
 #pragma once
-#include "superpack/problems/families.hpp"
+#include "superpack/problems/families/families.hpp"
 
 namespace superpack {
 

@@ -1,10 +1,10 @@
 // The enclosure of S6 (superpack's own family, NOTES.md 4.2) at p, the family's entry in the registry
-// (family_registry.hpp); its KKT system is in local_optimality.hpp, its triples in s6.hpp.
+// (family_registry.hpp); its KKT system is in local_optimality.hpp, its triples in s6_definition.hpp.
 #include "family_enclosure.hpp"
 
 #include "superpack/arith/contract.hpp"
-#include "superpack/problems/local_optimality.hpp"
-#include "superpack/problems/s6.hpp"
+#include "superpack/problems/optimality/local_optimality.hpp"
+#include "superpack/problems/families/s6_definition.hpp"
 
 namespace superpack {
 
