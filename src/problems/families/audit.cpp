@@ -298,8 +298,8 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
     const std::vector<double>& continuation_start = family_definition(family).continuation_start;
     if (!continuation_start.empty()) {
         // O1's second root starts at (q, s) = (5/12, 1/6).
-        const std::vector<double> start = branch == AuditBranch::published ? continuation_start : std::vector{5.0 / 12, 1.0 / 6};
-        tracker = BranchTracker{start, std::nullopt, std::nullopt, false};
+        const std::vector<double> root = branch == AuditBranch::published ? continuation_start : std::vector{5.0 / 12, 1.0 / 6};
+        tracker = BranchTracker{root, std::nullopt, std::nullopt, false};
         if (range.lo != Rational(1, 2)) {
             // Start the continuation from the complete root search at the exact left end (D14:
             // its branch root comes first).
