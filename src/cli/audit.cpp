@@ -69,7 +69,9 @@ void write_audit_certificate(const std::string& path, const AuditResult& result)
               << " pieces with a certified verdict)\n";
 }
 
-int run(const AuditOptions& options, bool default_directory) {
+// The families to audit, after the options' checks, each with its usage error (a step of its
+// own: run reads as check, audit each family, report).
+std::vector<Family> checked_families(const AuditOptions& options) {
     std::vector<Family> families = options.family.empty() ? all_families() : std::vector{parse_family(options.family)};
     if (options.second_root && (families.size() != 1 || families[0] != Family::O1))
         throw Failure(exit_usage, "--second-root needs --family O1");
@@ -82,19 +84,51 @@ int run(const AuditOptions& options, bool default_directory) {
                                       std::to_string(options.pieces));
     if (options.depth != -1 && (options.depth < 0 || options.depth > max_depth))
         throw Failure(exit_usage, "--depth must be from 0 to " + std::to_string(max_depth) + ", got " + std::to_string(options.depth));
+    return families;
+}
+
+// Each family's range of p: --p-range, or the claimed range ([1/2, 2] for O1's second root)
+// (a step of its own, like checked_families).
+std::vector<AuditRange> audit_ranges(const AuditOptions& options, const std::vector<Family>& families) {
     std::vector<AuditRange> ranges;
     for (Family family : families) {
         AuditRange range = parse_range(options.p_range, family, claimed_audit_range(family));
         if (options.second_root && options.p_range.empty()) range = {Rational(1, 2), Rational(2), range.breaks, "[1/2, 2]"};
         ranges.push_back(range);
     }
+    return ranges;
+}
+
+// The file a family's audit is written to, in --output-directory (its own function: the paths
+// are checked before the work and written after it).
+std::string audit_file(const AuditOptions& options, Family family) {
+    const AuditResult named{family, options.second_root ? AuditBranch::o1_second_root : AuditBranch::published, {}, {}, std::nullopt};
+    return options.output_directory + "/" + std::filesystem::path(audit_file_name(named)).filename().string();
+}
+
+// One family's audit as text: its verdict ranges, one a line (a step of its own: the text
+// report, apart from the audit and its files).
+void print_audit_text(Family family, const Json& summary, const AuditResult& result, const AuditRange& range, double seconds,
+                      const std::string& file) {
+    std::cout << to_string(family) << " (" << summary["lattice"].get<std::string>() << "), " << result.pieces.size()
+              << " pieces, " << seconds << " s -> " << file << "\n  " << range.note << "\n";
+    for (const AuditPiece& piece : merge_verdict_ranges(result.pieces)) {
+        std::cout << "  p in " << range_text(piece) << "  " << piece.outcome;
+        if (piece.outcome == "packing") std::cout << ", " << piece.contacts << " contacts";
+        if (piece.witness)
+            std::cout << ", witness (" << (*piece.witness)[0] << ", " << (*piece.witness)[1] << ", "
+                      << (*piece.witness)[2] << ")";
+        if (piece.outcome == "undecided" || piece.outcome == "overlapping_at_point") std::cout << ": " << piece.reason;
+        std::cout << "\n";
+    }
+}
+
+int run(const AuditOptions& options, bool default_directory) {
+    const std::vector<Family> families = checked_families(options);
+    const std::vector<AuditRange> ranges = audit_ranges(options, families);
     // Every path is checked before hours of work: the default out/ is created, a named directory must exist.
     if (default_directory) create_default_directory(options.output_directory);
-    auto file_of = [&](Family family) {
-        const AuditResult named{family, options.second_root ? AuditBranch::o1_second_root : AuditBranch::published, {}, {}, std::nullopt};
-        return options.output_directory + "/" + std::filesystem::path(audit_file_name(named)).filename().string();
-    };
-    for (Family family : families) require_writable_target(file_of(family));
+    for (Family family : families) require_writable_target(audit_file(options, family));
     if (!options.certificate.empty()) require_writable_target(options.certificate);
     require_rounding_self_test();
     Json document = header_json("audit", DoubleField{}, 15);
@@ -111,7 +145,7 @@ int run(const AuditOptions& options, bool default_directory) {
                                                 options.second_root ? AuditBranch::o1_second_root : AuditBranch::published,
                                                 [](const std::string& line) { std::cerr << "audit: " << line << "\n"; });
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const std::string file = file_of(family);
+        const std::string file = audit_file(options, family);
         undecided_pieces += std::count_if(result.pieces.begin(), result.pieces.end(), undecided);
         Json full = header_json("audit", DoubleField{}, 15);
         full.update(audit_json(result));
@@ -121,19 +155,7 @@ int run(const AuditOptions& options, bool default_directory) {
         audits.push_back(Json{{"family", summary["family"]}, {"lattice", summary["lattice"]}, {"range", summary["range"]},
                               {"range_note", summary["range_note"]}, {"pieces", result.pieces.size()},
                               {"verdict_ranges", summary["verdict_ranges"]}, {"file", file}});
-        if (!options.json) {
-            std::cout << to_string(family) << " (" << summary["lattice"].get<std::string>() << "), " << result.pieces.size()
-                      << " pieces, " << seconds << " s -> " << file << "\n  " << range.note << "\n";
-            for (const AuditPiece& piece : merge_verdict_ranges(result.pieces)) {
-                std::cout << "  p in " << range_text(piece) << "  " << piece.outcome;
-                if (piece.outcome == "packing") std::cout << ", " << piece.contacts << " contacts";
-                if (piece.witness)
-                    std::cout << ", witness (" << (*piece.witness)[0] << ", " << (*piece.witness)[1] << ", "
-                              << (*piece.witness)[2] << ")";
-                if (piece.outcome == "undecided" || piece.outcome == "overlapping_at_point") std::cout << ": " << piece.reason;
-                std::cout << "\n";
-            }
-        }
+        if (!options.json) print_audit_text(family, summary, result, range, seconds, file);
     }
     if (options.json) {
         document["audits"] = audits;

@@ -319,7 +319,9 @@ int run_scan(const BestCommandOptions& options) {
     });
 }
 
-int run(const BestCommandOptions& options) {
+// The options' checks: --p or --scan, and what goes with each, each with its usage error (a
+// step of its own: run reads as check, then scan or certify one p).
+void check_best_options(const BestCommandOptions& options) {
     if (!options.scan.empty()) {
         if (!options.p.empty()) throw Failure(exit_usage, "best: give one of --p and --scan, not both");
         if (!options.csv && options.plot.empty()) throw Failure(exit_usage, "best: --scan needs --csv or --plot FILE.png");
@@ -334,6 +336,10 @@ int run(const BestCommandOptions& options) {
     }
     if (options.starts < 0 || options.starts > max_starts)
         throw InputError("--starts: 0 to " + std::to_string(max_starts) + " random starts, got " + std::to_string(options.starts));
+}
+
+int run(const BestCommandOptions& options) {
+    check_best_options(options);
     if (!options.scan.empty()) return run_scan(options);
     const Rational p = parse_p(options.p);
     require_best_domain(p);

@@ -78,7 +78,9 @@ Json run_summary(const sim::EventMdResult& run, double seconds) {
                 {"note", "floating-point estimates of the dynamics; the certified phi is below"}};
 }
 
-int run(const MdOptions& options) {
+// The options' checks, each with its usage error; returns p (a step of its own: run reads as
+// check, start, run, prove, report).
+Rational checked_p(const MdOptions& options) {
     const Rational p = parse_p(options.p);
     if (p < Rational(1, 2)) throw Failure(exit_usage, "md: p = " + options.p + " is below 1/2: the dynamics and its proof are for convex superballs");
     require_best_domain(p);
@@ -93,21 +95,27 @@ int run(const MdOptions& options) {
         throw Failure(exit_usage, "--pressure-limit: 10 to 10^9, got " + shortest(options.pressure_limit));
     if (options.cell != "fixed" && options.cell != "deforming")
         throw Failure(exit_usage, "--cell: fixed or deforming, got '" + options.cell + "'");
-    std::optional<Family> family;
-    if (options.init != "random" && options.init != "fcc") family = parse_family(options.init);
-    require_packing_files(options.files);
-    require_rounding_self_test();
-    const DoubleField field;
-    const sim::SuperballShape shape(p.get_d());
+    return p;
+}
 
-    const BestLattice<DInterval> best = reference_lattice(p, "md");
-    sim::PeriodicConfiguration start;
+// The dynamics' options from the command's (a step of its own, like checked_p).
+sim::EventMdOptions md_run_options(const MdOptions& options) {
     sim::EventMdOptions run_options;
     run_options.seed = options.seed;
     run_options.growth_rate = options.growth;
     run_options.max_collisions = options.max_collisions;
     run_options.pressure_limit = options.pressure_limit;
     if (options.cell == "deforming") run_options.cell_moves = cell_moves_per_window;
+    return run_options;
+}
+
+// The start --init asks for: random at random_start_phi, or a lattice (fcc or a family) whose
+// bodies grow from lattice_start_fraction of their largest free scale, which is then set in
+// run_options (a step of its own, like checked_p).
+sim::PeriodicConfiguration md_start(const MdOptions& options, const std::optional<Family>& family, const Rational& p,
+                                    const sim::SuperballShape& shape, const DoubleField& field,
+                                    sim::EventMdOptions& run_options) {
+    sim::PeriodicConfiguration start;
     if (options.init == "random") {
         sim::RandomSource random(options.seed ^ 0x9e3779b97f4a7c15ULL);
         start = sim::random_configuration(shape, options.particles, random_start_phi, random);
@@ -122,9 +130,13 @@ int run(const MdOptions& options) {
         }
         run_options.initial_scale = lattice_start_fraction * sim::largest_free_scale(shape, start);
     }
+    return start;
+}
 
-    std::cerr << "md: " << options.particles << " particles from " << options.init << ", growth " << shortest(options.growth) << " (seed "
-              << options.seed << ")\n";
+// The dynamics, with progress on stderr at most once a second; `seconds` gets its wall time (a
+// step of its own: the timing and the progress are the command's, not the simulation's).
+sim::EventMdResult run_dynamics(const sim::SuperballShape& shape, const sim::PeriodicConfiguration& start,
+                                const sim::EventMdOptions& run_options, double& seconds) {
     const auto begin = std::chrono::steady_clock::now();
     auto last = begin;
     sim::EventMdResult run;
@@ -139,7 +151,27 @@ int run(const MdOptions& options) {
     } catch (const std::invalid_argument& error) {
         throw Failure(exit_usage, std::string("md: ") + error.what());
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    return run;
+}
+
+int run(const MdOptions& options) {
+    const Rational p = checked_p(options);
+    std::optional<Family> family;
+    if (options.init != "random" && options.init != "fcc") family = parse_family(options.init);
+    require_packing_files(options.files);
+    require_rounding_self_test();
+    const DoubleField field;
+    const sim::SuperballShape shape(p.get_d());
+
+    const BestLattice<DInterval> best = reference_lattice(p, "md");
+    sim::EventMdOptions run_options = md_run_options(options);
+    const sim::PeriodicConfiguration start = md_start(options, family, p, shape, field, run_options);
+
+    std::cerr << "md: " << options.particles << " particles from " << options.init << ", growth " << shortest(options.growth) << " (seed "
+              << options.seed << ")\n";
+    double seconds = 0;
+    const sim::EventMdResult run = run_dynamics(shape, start, run_options, seconds);
 
     std::cerr << "md: proving the final packing\n";
     const PeriodicCertificate<DInterval> proof = prove_end_state(p, shape, run.configuration);

@@ -48,7 +48,9 @@ Json configuration_summary(const sim::ShrinkingCellResult& run, double seconds) 
                 {"note", "floating-point estimates of the optimizer; the certified phi is below"}};
 }
 
-int run(const SimulateOptions& options) {
+// The options' checks, each with its usage error; returns p (a step of its own: run reads as
+// check, start, run, prove, report).
+Rational checked_p(const SimulateOptions& options) {
     const Rational p = parse_p(options.p);
     if (p < Rational(1, 2)) throw Failure(exit_usage, "simulate: p = " + options.p + " is below 1/2: the optimizer and its proof are for convex superballs");
     require_best_domain(p);
@@ -61,15 +63,14 @@ int run(const SimulateOptions& options) {
         given << *options.pressure;
         throw Failure(exit_usage, "--pressure: 0.001 to 10^6, got " + given.str());
     }
-    std::optional<Family> family;
-    if (options.init != "lattice" && options.init != "random") family = parse_family(options.init);
-    require_packing_files(options.files);
-    require_rounding_self_test();
-    const DoubleField field;
-    const sim::SuperballShape shape(p.get_d());
+    return p;
+}
 
-    // The reference: the best lattice superpack certifies at p, which also gives the lattice start.
-    const BestLattice<DInterval> best = reference_lattice(p, "simulate");
+// The start --init asks for: a family's lattice, the best lattice, or random (a step of its
+// own, like checked_p).
+sim::PeriodicConfiguration simulate_start(const SimulateOptions& options, const std::optional<Family>& family, const Rational& p,
+                                          const sim::SuperballShape& shape, const DoubleField& field,
+                                          const BestLattice<DInterval>& best) {
     sim::PeriodicConfiguration start;
     if (family) {
         const FamilyLattice<DInterval> lattice = enclose_family(*family, p, field);
@@ -82,15 +83,16 @@ int run(const SimulateOptions& options) {
         sim::RandomSource random(options.seed ^ 0x9e3779b97f4a7c15ULL);
         start = sim::random_configuration(shape, options.particles, random_start_phi, random);
     }
+    return start;
+}
 
-    std::cerr << "simulate: " << options.particles << " particles, " << options.steps << " cycles from " << options.init << " (seed "
-              << options.seed << ")\n";
+// The optimizer, with a progress bar on stderr at most once a second; `seconds` gets its wall
+// time (a step of its own: the timing and the progress are the command's, not the optimizer's).
+sim::ShrinkingCellResult run_optimizer(const SimulateOptions& options, const sim::SuperballShape& shape,
+                                       const sim::PeriodicConfiguration& start, const sim::ShrinkingCellOptions& run_options,
+                                       double& seconds) {
     const auto begin = std::chrono::steady_clock::now();
     auto last = begin;
-    sim::ShrinkingCellOptions run_options;
-    run_options.cycles = options.steps;
-    run_options.seed = options.seed;
-    run_options.start_pressure = options.pressure ? *options.pressure : options.init == "random" ? random_start_pressure : lattice_start_pressure;
     const sim::ShrinkingCellResult run = sim::shrink_cell(shape, start, run_options, [&](const sim::ShrinkingCellProgress& progress) {
         const auto now = std::chrono::steady_clock::now();
         if (now - last < std::chrono::seconds(1)) return;
@@ -99,7 +101,31 @@ int run(const SimulateOptions& options) {
         std::cerr << "simulate: [" << std::string(static_cast<std::size_t>(percent / 5), '#') << std::string(static_cast<std::size_t>(20 - percent / 5), '.')
                   << "] " << percent << "%, cycle " << progress.cycle << " / " << options.steps << ", phi ~ " << progress.phi << "\n";
     });
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    return run;
+}
+
+int run(const SimulateOptions& options) {
+    const Rational p = checked_p(options);
+    std::optional<Family> family;
+    if (options.init != "lattice" && options.init != "random") family = parse_family(options.init);
+    require_packing_files(options.files);
+    require_rounding_self_test();
+    const DoubleField field;
+    const sim::SuperballShape shape(p.get_d());
+
+    // The reference: the best lattice superpack certifies at p, which also gives the lattice start.
+    const BestLattice<DInterval> best = reference_lattice(p, "simulate");
+    const sim::PeriodicConfiguration start = simulate_start(options, family, p, shape, field, best);
+
+    std::cerr << "simulate: " << options.particles << " particles, " << options.steps << " cycles from " << options.init << " (seed "
+              << options.seed << ")\n";
+    sim::ShrinkingCellOptions run_options;
+    run_options.cycles = options.steps;
+    run_options.seed = options.seed;
+    run_options.start_pressure = options.pressure ? *options.pressure : options.init == "random" ? random_start_pressure : lattice_start_pressure;
+    double seconds = 0;
+    const sim::ShrinkingCellResult run = run_optimizer(options, shape, start, run_options, seconds);
 
     // The proof: exact rounding, a separating plane per close pair (sim's guess), scaled if needed.
     std::cerr << "simulate: proving the final packing\n";

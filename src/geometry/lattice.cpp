@@ -40,17 +40,14 @@ std::array<I, 3> cross(const std::array<I, 3>& u, const std::array<I, 3>& v) {
     return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
 }
 
-}  // namespace
-
+// The box |a_i| <= n_i of coefficients holding every lattice vector with max norm at most 2,
+// into check.coefficient_bound; false (with check.reason) when it is unbounded or holds more
+// than enumeration_box_limit triples (a step of its own: for_each_candidate's bounds, apart from
+// its enumeration).
 template <class I>
-bool for_each_candidate(const Basis<I>& basis, LatticeCheck<I>& check, const CandidateVisitor<I>& visit) {
+bool bound_coefficients(const Basis<I>& basis, const I& det, LatticeCheck<I>& check) {
     const auto field = field_of(basis[0][0]);
     const I two = field.integer(2);
-    const I det = determinant(basis);
-    if (contains_zero(det)) {
-        check.reason = "the basis is not certainly nonsingular (determinant encloses 0)";
-        return false;
-    }
     // Coefficient box: a_i = (e_j x e_k) . v / det, and |(e_j x e_k) . v| <= ||e_j x e_k||_1 ||v||_inf,
     // so ||v||_inf <= 2 forces |a_i| <= 2 ||e_j x e_k||_1 / |det|.
     for (int i = 0; i < 3; ++i) {
@@ -75,6 +72,42 @@ bool for_each_candidate(const Basis<I>& basis, LatticeCheck<I>& check, const Can
             return false;
         }
     }
+    return true;
+}
+
+// check.min_norm, the min over all nonzero vectors: those outside the evaluated set have norm
+// > 2, so it is the min over the evaluated ones, capped at 2 (a step of its own: check_lattice's
+// summary, apart from its enumeration).
+template <class I>
+void enclose_min_norm(LatticeCheck<I>& check, const I& two) {
+    mpfr_t lo, hi, best_lo, best_hi;
+    for (auto* x : {&lo, &hi, &best_lo, &best_hi}) mpfr_init2(*x, 256);
+    mpfr_set_ui(best_lo, 2, MPFR_RNDD);
+    mpfr_set_inf(best_hi, 1);
+    for (const auto& candidate : check.evaluated) {
+        get_bounds(lo, hi, candidate.norm);
+        mpfr_min(best_lo, best_lo, lo, MPFR_RNDD);
+        mpfr_min(best_hi, best_hi, hi, MPFR_RNDU);
+    }
+    if (mpfr_inf_p(best_hi) == 0) {
+        const double low = mpfr_get_d(best_lo, MPFR_RNDD), high = mpfr_get_d(best_hi, MPFR_RNDU);
+        check.min_norm = from_doubles(two, std::min(low, high), high);
+    }
+    for (auto* x : {&lo, &hi, &best_lo, &best_hi}) mpfr_clear(*x);
+}
+
+}  // namespace
+
+template <class I>
+bool for_each_candidate(const Basis<I>& basis, LatticeCheck<I>& check, const CandidateVisitor<I>& visit) {
+    const auto field = field_of(basis[0][0]);
+    const I two = field.integer(2);
+    const I det = determinant(basis);
+    if (contains_zero(det)) {
+        check.reason = "the basis is not certainly nonsingular (determinant encloses 0)";
+        return false;
+    }
+    if (!bound_coefficients(basis, det, check)) return false;
     const Coefficients& n = check.coefficient_bound;
     std::size_t visited = 0;
     // One of v, -v: the first nonzero coefficient positive.
@@ -142,23 +175,7 @@ LatticeCheck<I> check_lattice(const Basis<I>& basis, const I& p, const ContactPr
         }
     });
     if (!complete) return check;
-    // min over all nonzero vectors: those outside the evaluated set have norm > 2.
-    if (!check.evaluated.empty()) {
-        mpfr_t lo, hi, best_lo, best_hi;
-        for (auto* x : {&lo, &hi, &best_lo, &best_hi}) mpfr_init2(*x, 256);
-        mpfr_set_ui(best_lo, 2, MPFR_RNDD);
-        mpfr_set_inf(best_hi, 1);
-        for (const auto& candidate : check.evaluated) {
-            get_bounds(lo, hi, candidate.norm);
-            mpfr_min(best_lo, best_lo, lo, MPFR_RNDD);
-            mpfr_min(best_hi, best_hi, hi, MPFR_RNDU);
-        }
-        if (mpfr_inf_p(best_hi) == 0) {
-            const double low = mpfr_get_d(best_lo, MPFR_RNDD), high = mpfr_get_d(best_hi, MPFR_RNDU);
-            check.min_norm = from_doubles(two, std::min(low, high), high);
-        }
-        for (auto* x : {&lo, &hi, &best_lo, &best_hi}) mpfr_clear(*x);
-    }
+    if (!check.evaluated.empty()) enclose_min_norm(check, two);
     std::ostringstream reason;
     if (!below.empty()) {
         check.witness = *std::min_element(below.begin(), below.end(), [](const auto& x, const auto& y) {

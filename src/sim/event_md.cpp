@@ -138,17 +138,15 @@ public:
         result.initial_scale = a0_;
         result.initial_energy = kinetic_energy(0);
         for (int i = 0; i < n_; ++i) predict(i, 0);
-        // Stop before a body could meet its own image (the loop never pairs a body with it).
-        double image_time = G_ > 0 ? (image_scale_ * (1 - 1e-9) - a0_) / G_ : infinity;
-        double stop_time = std::min(options_.max_time, image_time);
-        double now = 0, window_start = 0, window_temperature = 1, virial = 0;
-        long window_collisions = 0;
+        set_stop_time();
+        double now = 0;
+        Window window;
         for (;;) {
             const int i = tree_.top();
             const Event event = events_[i];
-            if (event.time > stop_time) {
-                now = stop_time;
-                (options_.max_time <= image_time ? result.time_limit : result.image_limit) = true;
+            if (event.time > stop_time_) {
+                now = stop_time_;
+                (options_.max_time <= image_time_ ? result.time_limit : result.image_limit) = true;
                 break;
             }
             now = event.time;
@@ -157,7 +155,7 @@ public:
                 predict(i, now);
                 continue;
             }
-            virial += collide(i, event);
+            window.virial += collide(i, event);
             ++result.collisions;
             if (progress && result.collisions % 1000 == 0)
                 progress({result.collisions, now, scale(now), phi(now), result.pressure});
@@ -165,49 +163,79 @@ public:
                 result.collision_limit = true;
                 break;
             }
-            if (++window_collisions < window_) continue;
-            // The window's pressure and collision rate; then the thermostat.
-            const double span = now - window_start, end_temperature = temperature(now);
-            // N collisions at one instant are no jamming: contacts that do not resolve (flat
-            // faces and sharp edges at p = 1/2, where an impulse at one point of a face leaves
-            // another closing).
-            if (!(span > 0)) {
-                result.stalled = true;
-                break;
-            }
-            result.pressure = span > 0 ? 1 + virial / (3 * n_ * 0.5 * (window_temperature + end_temperature) * span) : infinity;
-            const double rate = span > 0 ? window_collisions / (n_ * span) : infinity;
-            if (options_.pressure_limit > 0 && result.pressure > options_.pressure_limit) result.jammed_pressure = true;
-            else if (options_.collision_rate_limit > 0 && rate > options_.collision_rate_limit) result.jammed_rate = true;
-            if (result.jammed_pressure || result.jammed_rate) break;
-            bool repredict = false;
-            if (options_.cell_moves > 0) {
-                for (int j = 0; j < n_; ++j) synchronise(j, now);
-                const long kept = deform_cell(now);
-                result.cell_moves_kept += kept;
-                if (kept > 0) {
-                    repredict = true;
-                    image_time = G_ > 0 ? (image_scale_ * (1 - 1e-9) - a0_) / G_ : infinity;
-                    stop_time = std::min(options_.max_time, image_time);
-                }
-            }
-            if (G_ > 0) {
-                for (int j = 0; j < n_; ++j) synchronise(j, now);
-                rescale(std::sqrt(1 / end_temperature));
-                ++result.rescalings;
-                window_temperature = 1;
-                repredict = true;
-            } else {
-                window_temperature = end_temperature;
-            }
-            if (repredict) {
-                for (Particle& particle : particles_) ++particle.counter;
-                for (int j = 0; j < n_; ++j) predict(j, now);
-            }
-            virial = 0;
-            window_start = now;
-            window_collisions = 0;
+            if (++window.collisions < window_) continue;
+            if (!close_window(result, window, now)) break;
         }
+        finish(result, now);
+        return result;
+    }
+
+private:
+    // What a window of collisions gathers between two thermostat steps (kept together so that
+    // close_window can read and restart it).
+    struct Window {
+        double start = 0, temperature = 1, virial = 0;
+        long collisions = 0;
+    };
+
+    // Stop before a body could meet its own image (the loop never pairs a body with it): a step
+    // of its own because a kept cell trial changes the image scale, and so the stop.
+    void set_stop_time() {
+        image_time_ = G_ > 0 ? (image_scale_ * (1 - 1e-9) - a0_) / G_ : infinity;
+        stop_time_ = std::min(options_.max_time, image_time_);
+    }
+
+    // The end of a window of window_ collisions: the window's pressure and collision rate
+    // (which may stop the run as jammed), then the cell's trials and the thermostat. False when
+    // the run stops here. Its own step: run's loop then reads as one event after another.
+    bool close_window(EventMdResult& result, Window& window, double now) {
+        // The window's pressure and collision rate; then the thermostat.
+        const double span = now - window.start, end_temperature = temperature(now);
+        // N collisions at one instant are no jamming: contacts that do not resolve (flat
+        // faces and sharp edges at p = 1/2, where an impulse at one point of a face leaves
+        // another closing).
+        if (!(span > 0)) {
+            result.stalled = true;
+            return false;
+        }
+        result.pressure = span > 0 ? 1 + window.virial / (3 * n_ * 0.5 * (window.temperature + end_temperature) * span) : infinity;
+        const double rate = span > 0 ? window.collisions / (n_ * span) : infinity;
+        if (options_.pressure_limit > 0 && result.pressure > options_.pressure_limit) result.jammed_pressure = true;
+        else if (options_.collision_rate_limit > 0 && rate > options_.collision_rate_limit) result.jammed_rate = true;
+        if (result.jammed_pressure || result.jammed_rate) return false;
+        bool repredict = false;
+        if (options_.cell_moves > 0) {
+            for (int j = 0; j < n_; ++j) synchronise(j, now);
+            const long kept = deform_cell(now);
+            result.cell_moves_kept += kept;
+            if (kept > 0) {
+                repredict = true;
+                set_stop_time();
+            }
+        }
+        if (G_ > 0) {
+            for (int j = 0; j < n_; ++j) synchronise(j, now);
+            rescale(std::sqrt(1 / end_temperature));
+            ++result.rescalings;
+            window.temperature = 1;
+            repredict = true;
+        } else {
+            window.temperature = end_temperature;
+        }
+        if (repredict) {
+            for (Particle& particle : particles_) ++particle.counter;
+            for (int j = 0; j < n_; ++j) predict(j, now);
+        }
+        window.virial = 0;
+        window.start = now;
+        window.collisions = 0;
+        return true;
+    }
+
+    // The run's end state at time `now`: every particle synchronised, the counters, and the
+    // final configuration at unit scale with fractional coordinates in [0, 1) (a step of its
+    // own: what the result reports, apart from how the run went).
+    void finish(EventMdResult& result, double now) {
         for (int j = 0; j < n_; ++j) synchronise(j, now);
         result.time = now;
         result.scale = scale(now);
@@ -228,10 +256,8 @@ public:
             end.fractional.push_back(f);
             end.orientations.push_back(particle.orientation);
         }
-        return result;
     }
 
-private:
     double scale(double t) const { return a0_ + G_ * t; }
     double phi(double t) const { return n_ * superball_volume(shape_.p()) * std::pow(scale(t), 3) / std::fabs(determinant(cell_)); }
 
@@ -398,6 +424,7 @@ private:
     int n_ = 0;
     bool ball_ = false;
     double radius_ = 1, k_ = 0.4, G_ = 0, a0_ = 1, horizon_ = 1, image_scale_ = infinity, degrees_ = 1;
+    double image_time_ = infinity, stop_time_ = infinity;  // set_stop_time
     long window_ = 1;
     Matrix3 cell_{}, inverse_{};
     Vector3 column_norm_{};

@@ -42,6 +42,94 @@ std::vector<I> precondition(const DoubleMatrix& inverse, const std::vector<I>& v
     return result;
 }
 
+namespace detail {
+
+// The Jacobian J(X) of f over the box X, one column per seeded variable (a step of the
+// iteration of its own: K(X) uses it, and C is the inverse of its midpoints).
+template <class I, class F, class Field>
+std::vector<std::vector<I>> jacobian_over(const F& f, const std::vector<I>& current, const Field& field) {
+    const std::size_t n = current.size();
+    std::vector<std::vector<I>> jacobian(n, std::vector<I>(n, field.integer(0)));
+    for (std::size_t j = 0; j < n; ++j) {
+        std::vector<Jet<I>> seeded;
+        for (std::size_t k = 0; k < n; ++k) seeded.push_back(k == j ? variable(current[k]) : constant(current[k]));
+        const std::vector<Jet<I>> column = f(seeded);
+        for (std::size_t i = 0; i < n; ++i) jacobian[i][j] = column[i].derivative;
+    }
+    return jacobian;
+}
+
+// Whether every entry of J(X) is bounded: an unbounded entry (a power below 1 at 0) bounds no
+// contraction (its own step: the iteration gives up on it before inverting).
+template <class I>
+bool all_bounded(const std::vector<std::vector<I>>& jacobian) {
+    for (const std::vector<I>& row : jacobian)
+        for (const I& entry : row)
+            if (!bounded(entry)) return false;
+    return true;
+}
+
+// C, a floating-point inverse of the midpoint Jacobian; nothing when it is singular (its own
+// step: any C is sound, so it is computed in floating point apart from the interval part).
+template <class I>
+std::optional<DoubleMatrix> midpoint_inverse(const std::vector<std::vector<I>>& jacobian) {
+    const std::size_t n = jacobian.size();
+    DoubleMatrix middle(n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) middle(i, j) = mid_double(jacobian[i][j]);
+    return approximate_inverse(middle);
+}
+
+// K(X) and what it shows of X: within its interior (a unique zero), or disjoint from it (none).
+template <class I>
+struct KrawczykImage {
+    std::vector<I> image;
+    bool interior = true, disjoint = false;
+};
+
+// K(X) = m - C f(m) + (Id - C J(X)) (X - m), given the preconditioned residual C f(m) and the
+// offset X - m (its own step: the operator itself, apart from the iteration around it).
+template <class I, class Field>
+KrawczykImage<I> krawczyk_image(const std::vector<I>& current, const std::vector<I>& center, const std::vector<I>& offset,
+                                const std::vector<I>& preconditioned, const DoubleMatrix& inverse,
+                                const std::vector<std::vector<I>>& jacobian, const Field& field) {
+    const std::size_t n = current.size();
+    KrawczykImage<I> result;
+    for (std::size_t i = 0; i < n; ++i) {
+        I k = center[i] - preconditioned[i];
+        for (std::size_t j = 0; j < n; ++j) {
+            // Row i of (Id - C J(X)).
+            I entry = field.integer(i == j ? 1 : 0);
+            for (std::size_t l = 0; l < n; ++l)
+                entry = entry - from_doubles(field.integer(0), inverse(i, l), inverse(i, l)) * jacobian[l][j];
+            k = k + entry * offset[j];
+        }
+        result.image.push_back(k);
+        result.interior = result.interior && interior_contains(current[i], k);
+        I meet = k;
+        if (!intersect(meet, k, current[i])) result.disjoint = true;
+    }
+    return result;
+}
+
+// X becomes X ∩ K(X); returns whether that stopped paying: the new width is at most
+// target_width, or more than half the old one (its own step: the iteration's narrowing and
+// its stopping rule).
+template <class I>
+bool narrow_to_image(std::vector<I>& current, const std::vector<I>& image, double target_width) {
+    double before = 0, after = 0;
+    for (std::size_t i = 0; i < current.size(); ++i) {
+        before = std::max(before, width_upper(current[i]));
+        I meet = image[i];
+        intersect(meet, image[i], current[i]);
+        current[i] = meet;
+        after = std::max(after, width_upper(current[i]));
+    }
+    return after <= target_width || after >= 0.5 * before;
+}
+
+}  // namespace detail
+
 // The same operator with the preconditioned residual C f(m) supplied by `residual(m, C)`, an
 // enclosure of C f(m) (for a family f(x, p) over an interval of p, a mean-value form in p keeps
 // the cancellation that C f(m, P) loses: krawczyk_isolate_in_parameter below).
@@ -61,25 +149,12 @@ KrawczykResult<I> krawczyk_isolate_with_residual(const F& f, const R& residual, 
                 if (!result.existence) result.reason = "a component of f has one sign on the box";
                 return result;
             }
-        // Jacobian over the box, one column per seeded variable.
-        std::vector<std::vector<I>> jacobian(n, std::vector<I>(n, field.integer(0)));
-        for (std::size_t j = 0; j < n; ++j) {
-            std::vector<Jet<I>> seeded;
-            for (std::size_t k = 0; k < n; ++k) seeded.push_back(k == j ? variable(current[k]) : constant(current[k]));
-            const std::vector<Jet<I>> column = f(seeded);
-            for (std::size_t i = 0; i < n; ++i) jacobian[i][j] = column[i].derivative;
+        const std::vector<std::vector<I>> jacobian = detail::jacobian_over(f, current, field);
+        if (!detail::all_bounded(jacobian)) {
+            if (!result.existence) result.reason = "Jacobian unbounded on the box";
+            return result;
         }
-        // An unbounded entry (a power below 1 at 0) bounds no contraction: undecided.
-        for (const std::vector<I>& row : jacobian)
-            for (const I& entry : row)
-                if (!bounded(entry)) {
-                    if (!result.existence) result.reason = "Jacobian unbounded on the box";
-                    return result;
-                }
-        DoubleMatrix middle(n);
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < n; ++j) middle(i, j) = mid_double(jacobian[i][j]);
-        const std::optional<DoubleMatrix> inverse = approximate_inverse(middle);
+        const std::optional<DoubleMatrix> inverse = detail::midpoint_inverse(jacobian);
         if (!inverse) {
             result.reason = "midpoint Jacobian singular";
             return result;
@@ -90,49 +165,26 @@ KrawczykResult<I> krawczyk_isolate_with_residual(const F& f, const R& residual, 
             offset.push_back(current[k] - center[k]);
         }
         const std::vector<I> preconditioned = residual(center, *inverse);
-        std::vector<I> image;
-        bool interior = true, disjoint = false;
-        for (std::size_t i = 0; i < n; ++i) {
-            I k = center[i] - preconditioned[i];
-            for (std::size_t j = 0; j < n; ++j) {
-                // Row i of (Id - C J(X)).
-                I entry = field.integer(i == j ? 1 : 0);
-                for (std::size_t l = 0; l < n; ++l)
-                    entry = entry - from_doubles(field.integer(0), (*inverse)(i, l), (*inverse)(i, l)) * jacobian[l][j];
-                k = k + entry * offset[j];
-            }
-            image.push_back(k);
-            interior = interior && interior_contains(current[i], k);
-            I meet = k;
-            if (!intersect(meet, k, current[i])) disjoint = true;
-        }
-        if (disjoint) {
+        const detail::KrawczykImage<I> contraction = detail::krawczyk_image(current, center, offset, preconditioned, *inverse, jacobian, field);
+        if (contraction.disjoint) {
             if (!result.existence) {
                 result.status = RootStatus::none;
                 result.reason = "K(X) disjoint from X";
             }
             return result;
         }
-        if (interior && !result.existence) {
+        if (contraction.interior && !result.existence) {
             result.existence = result.uniqueness = true;
             result.status = RootStatus::unique;
             result.reason = "K(X) in interior of X";
         }
-        double before = 0, after = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            before = std::max(before, width_upper(current[i]));
-            I meet = image[i];
-            intersect(meet, image[i], current[i]);
-            current[i] = meet;
-            after = std::max(after, width_upper(current[i]));
-        }
+        const bool settled = detail::narrow_to_image(current, contraction.image, target_width);
         result.box = current;
-        if (result.existence && (after <= target_width || after >= 0.5 * before)) break;
+        if (result.existence && settled) break;
     }
     if (!result.existence) result.reason = "Krawczyk operator did not contract into the box";
     return result;
 }
-
 
 template <class I, class F>
 KrawczykResult<I> krawczyk_isolate(const F& f, const std::vector<I>& box, double target_width, int max_iterations) {

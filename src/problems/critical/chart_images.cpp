@@ -57,17 +57,12 @@ std::array<Coefficients, 3> unimodular_inverse(const std::array<Coefficients, 3>
     return inverse;
 }
 
-}  // namespace
-
-std::vector<ChartImage> chart_images(const ClosingRegion<DInterval>& region, std::size_t index) {
-    std::vector<ChartImage> images;
-    if (region.verdict != Outcome::proved) return images;
+// The region's contact vectors +-c B* (B* the midpoint of its centre basis), each with its
+// coefficients c (a step of its own: the candidates b1, b2, b3 are drawn from them).
+void contact_vectors(const ClosingRegion<DInterval>& region, std::vector<Vector>& vectors, std::vector<Coefficients>& coefficients) {
     DoubleBasis reference{};
     for (int k = 0; k < 3; ++k)
         for (int j = 0; j < 3; ++j) reference[k][j] = mid_double(region.center[k][j]);
-    // The contact vectors +-c B*, with their coefficients.
-    std::vector<Vector> vectors;
-    std::vector<Coefficients> coefficients;
     for (const Coefficients& c : region.contacts)
         for (const int sign : {1, -1}) {
             Vector v{};
@@ -75,6 +70,50 @@ std::vector<ChartImage> chart_images(const ClosingRegion<DInterval>& region, std
             vectors.push_back(v);
             coefficients.push_back({sign * c[0], sign * c[1], sign * c[2]});
         }
+}
+
+// Whether b1 is the longest in the max norm among its orbit (every vector for A3, b1..b3 for
+// W): the chart's normalisation, one test of a candidate.
+bool longest_first(MinkowskiCase configuration, const Vector& b1, const Vector& b2, const Vector& b3,
+                   const std::array<Vector, 3>& others) {
+    double longest = std::max(max_norm(b2), max_norm(b3));
+    if (configuration == MinkowskiCase::a3)
+        for (const Vector& v : others) longest = std::max(longest, max_norm(v));
+    return !(longest > max_norm(b1) + tolerance);
+}
+
+// The configuration's six triples must be the region's contacts exactly: the region's lemma
+// needs every one of its constraints, and a chart point satisfies only the configuration's six
+// (a seven-pair optimum such as D14 gets no image). One test of a candidate W.
+bool triples_are_contacts(const ClosingRegion<DInterval>& region, MinkowskiCase configuration, const std::array<Coefficients, 3>& w) {
+    bool same = region.contacts.size() == 6;
+    for (const Coefficients& d : configuration_triples(configuration)) {
+        Coefficients image{};
+        for (int k = 0; k < 3; ++k) image[k] = d[0] * w[0][k] + d[1] * w[1][k] + d[2] * w[2][k];
+        const Coefficients r = representative(image);
+        same = same && std::find(region.contacts.begin(), region.contacts.end(), r) != region.contacts.end();
+    }
+    return same;
+}
+
+// Whether `images` already holds this configuration's chart basis: one image per chart basis
+// (the lattice's own symmetries give the others).
+bool already_found(const std::vector<ChartImage>& images, MinkowskiCase configuration, const Vector& b1, const Vector& b2,
+                   const Vector& b3) {
+    return std::any_of(images.begin(), images.end(), [&](const ChartImage& known) {
+        return known.configuration == configuration && close(known.chart_basis[0], b1) && close(known.chart_basis[1], b2) &&
+               close(known.chart_basis[2], b3);
+    });
+}
+
+}  // namespace
+
+std::vector<ChartImage> chart_images(const ClosingRegion<DInterval>& region, std::size_t index) {
+    std::vector<ChartImage> images;
+    if (region.verdict != Outcome::proved) return images;
+    std::vector<Vector> vectors;
+    std::vector<Coefficients> coefficients;
+    contact_vectors(region, vectors, coefficients);
     auto is_contact = [&](const Vector& v) {
         return std::any_of(vectors.begin(), vectors.end(), [&](const Vector& u) { return close(u, v); });
     };
@@ -95,32 +134,13 @@ std::vector<ChartImage> chart_images(const ClosingRegion<DInterval>& region, std
                             Vector{u2[0] + sigma * u3[0], u2[1] + sigma * u3[1], u2[2] + sigma * u3[2]},
                             Vector{u3[0] + sigma * u1[0], u3[1] + sigma * u1[1], u3[2] + sigma * u1[2]}};
                         if (!std::all_of(others.begin(), others.end(), is_contact)) continue;
-                        // b1 longest in the max norm among its orbit (every vector for A3, b1..b3 for W).
-                        double longest = std::max(max_norm(b2), max_norm(b3));
-                        if (configuration == MinkowskiCase::a3)
-                            for (const Vector& v : others) longest = std::max(longest, max_norm(v));
-                        if (longest > max_norm(b1) + tolerance) continue;
+                        if (!longest_first(configuration, b1, b2, b3, others)) continue;
                         const std::array<Coefficients, 3> w{coefficients[i1], coefficients[i2], coefficients[i3]};
                         const long det = integer_determinant(w);
                         if (det != 1 && det != -1) continue;
-                        // The configuration's six triples must be the region's contacts exactly: the
-                        // region's lemma needs every one of its constraints, and a chart point satisfies
-                        // only the configuration's six (a seven-pair optimum such as D14 gets no image).
-                        bool same = region.contacts.size() == 6;
-                        for (const Coefficients& d : configuration_triples(configuration)) {
-                            Coefficients image{};
-                            for (int k = 0; k < 3; ++k) image[k] = d[0] * w[0][k] + d[1] * w[1][k] + d[2] * w[2][k];
-                            const Coefficients r = representative(image);
-                            same = same && std::find(region.contacts.begin(), region.contacts.end(), r) != region.contacts.end();
-                        }
-                        if (!same) continue;
-                        // One image per chart basis (the lattice's own symmetries give the others).
+                        if (!triples_are_contacts(region, configuration, w)) continue;
+                        if (already_found(images, configuration, b1, b2, b3)) continue;
                         const DoubleBasis chart{b1, b2, b3};
-                        if (std::any_of(images.begin(), images.end(), [&](const ChartImage& known) {
-                                return known.configuration == configuration && close(known.chart_basis[0], b1) &&
-                                       close(known.chart_basis[1], b2) && close(known.chart_basis[2], b3);
-                            }))
-                            continue;
                         ChartImage image;
                         image.configuration = configuration;
                         image.inverse = unimodular_inverse(w, det);

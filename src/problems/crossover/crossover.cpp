@@ -272,6 +272,181 @@ DInterval outward_double(const Ball& x) {
     return result;
 }
 
+// The first pieces of the cubic partition: `count` pieces of equal width from left_end to
+// right_end (a step of its own: the partition's start, apart from how a piece is decided).
+std::vector<std::vector<DInterval>> first_cubic_pieces(double left_end, double right_end, int count) {
+    std::vector<double> ends;
+    for (int k = 0; k < count; ++k) ends.push_back(left_end + (right_end - left_end) * k / count);
+    ends.push_back(right_end);
+    std::vector<std::vector<DInterval>> first;
+    for (std::size_t k = 1; k < ends.size(); ++k) first.push_back({interval_from(DInterval(0.0), ends[k - 1], ends[k])});
+    return first;
+}
+
+// Decides the sign of g = phi_C1 - phi_C0 on each piece of the cubic partition. A class, not a
+// lambda in certify_cubic_crossover_impl, because what it learns is carried from piece to piece
+// (pieces are proved left to right: the sign of g at the next piece's left end, the number of
+// root pieces) and each way of deciding a piece is then a named step.
+template <class Field>
+class CubicSignClassifier {
+public:
+    using I = typename Field::Interval;
+    CubicSignClassifier(const Field& field, long digits, const Ball& like, double left_end, CubicCrossover<I>& result)
+        : field_(field), digits_(digits), like_(like), left_end_(left_end), result_(result) {}
+
+    Classification<SignPiece> classify(const std::vector<DInterval>& box) {
+        const double a = box[0].lower(), b = box[0].upper();
+        const Ball p = interval_from(like_, a, b);
+        SignPiece piece{box[0], PieceClaim::undecided, "", std::nullopt, std::nullopt};
+        const auto c0_root = certify_piece_root(Family::C0, p);
+        const auto c1_root = certify_piece_root(Family::C1, p);
+        if (!c0_root || !c1_root) return not_decided<SignPiece>("s not certified over the piece");
+        // The direct enclosure first: it needs no derivative.
+        const Ball direct = c1_root->phi - c0_root->phi;
+        if (a != left_end_ && (certainly_negative(direct) || certainly_positive(direct))) {
+            const int sign = certainly_negative(direct) ? -1 : 1;
+            piece.difference = outward_double(direct);
+            return record(piece, sign < 0 ? PieceClaim::negative : PieceClaim::positive, "g excludes 0 on the piece (direct)",
+                          sign);
+        }
+        Jet<Ball> g{like_, like_};
+        try {
+            g = difference_jet(*c0_root, *c1_root, p);
+        } catch (const EvaluationFailed& failure) {
+            return not_decided<SignPiece>(failure.what());
+        }
+        piece.derivative = outward_double(g.derivative);
+        // Monotone from a known end: g(a) <= 0 and g' < 0 give g < 0 on (a, b]; likewise > 0.
+        if (left_known_ && certainly_negative(g.derivative) && left_sign_ <= 0) {
+            piece.difference = outward_double(g.value);
+            return record(piece, PieceClaim::negative,
+                          "g(a) <= 0 (the piece to the left, or g(1) = 0) and g' < 0 on the piece", -1);
+        }
+        if (left_known_ && certainly_positive(g.derivative) && left_sign_ >= 0) {
+            piece.difference = outward_double(g.value);
+            return record(piece, PieceClaim::positive,
+                          "g(a) >= 0 (the piece to the left, or g(1) = 0) and g' > 0 on the piece", 1);
+        }
+        return classify_by_mean_value(piece, p, g, *c0_root, *c1_root);
+    }
+
+    // The undecided leaf of a piece the partition gives up on: the sign at the next left end is lost.
+    SignPiece give_up(const std::vector<DInterval>& box, const std::string& reason) {
+        left_known_ = false;
+        return SignPiece{box[0], PieceClaim::undecided, reason, std::nullopt, std::nullopt};
+    }
+
+    std::size_t root_pieces() const { return root_pieces_; }
+
+private:
+    // A decided piece: its claim, and the sign of g it proved at its right end for the next piece.
+    Classification<SignPiece> record(SignPiece& piece, PieceClaim claim, const std::string& reason, int right_sign) {
+        piece.claim = claim;
+        piece.reason = reason;
+        left_known_ = true;
+        left_sign_ = right_sign;
+        return decided(piece);
+    }
+
+    // The direct enclosure, and if it does not decide, the mean value form g(m) + g'(P)(P - m)
+    // met with it; then interval Newton when g' excludes 0 (the piece may hold the root).
+    Classification<SignPiece> classify_by_mean_value(SignPiece& piece, const Ball& p, const Jet<Ball>& g,
+                                                     const PieceRoot<Ball>& c0_root, const PieceRoot<Ball>& c1_root) {
+        const double a = piece.p.lower(), b = piece.p.upper();
+        Ball value = g.value;
+        if (contains_zero(value) && a != left_end_) try {
+            const Ball middle = midpoint(p);
+            const Ball centered = difference_value(c0_root, c1_root, middle) + g.derivative * (p - middle);
+            if (!intersect(value, centered, g.value)) value = centered;
+        } catch (const EvaluationFailed&) {
+        }
+        piece.difference = outward_double(value);
+        if (a != left_end_ && (certainly_negative(value) || certainly_positive(value))) {
+            const int sign = certainly_negative(value) ? -1 : 1;
+            return record(piece, sign < 0 ? PieceClaim::negative : PieceClaim::positive,
+                          "g excludes 0 on the piece (mean value form)", sign);
+        }
+        if (a != left_end_ && !contains_zero(g.derivative) && refine_root(field_.integer(0), a, b, digits_, result_)) {
+            ++root_pieces_;
+            return record(piece, PieceClaim::root, "interval Newton: exactly one zero of g in the piece (g' excludes 0)",
+                          certainly_positive(g.derivative) ? 1 : -1);
+        }
+        return not_decided<SignPiece>("neither g nor g' decided");
+    }
+
+    const Field& field_;
+    long digits_;
+    Ball like_;
+    double left_end_;
+    CubicCrossover<I>& result_;
+    std::size_t root_pieces_ = 0;
+    // The sign of g at the left end of the next piece: g(1) = 0 exactly (NOTES.md: both
+    // lattices are FCC); after a piece, the sign it proved at its right end. Unknown after an
+    // undecided piece.
+    bool left_known_ = true;
+    int left_sign_ = 0;
+};
+
+// Whether the partition shows exactly one sign change of g, at its one root piece; sets the
+// signs on either side, or the message saying why not (a step of its own: the proof's
+// conclusion from the pieces).
+template <class I>
+bool one_sign_change(CubicCrossover<I>& result, std::size_t root_pieces) {
+    std::size_t undecided = 0, root_index = result.pieces.size();
+    for (std::size_t k = 0; k < result.pieces.size(); ++k) {
+        if (result.pieces[k].claim == PieceClaim::undecided) ++undecided;
+        if (result.pieces[k].claim == PieceClaim::root) root_index = k;
+    }
+    if (undecided > 0) {
+        result.message = std::to_string(undecided) + " pieces of [1, 10] undecided";
+        return false;
+    }
+    if (root_pieces != 1) {
+        result.message = std::to_string(root_pieces) + " pieces with a certified zero of g (expected 1)";
+        return false;
+    }
+    // On the root piece g' has one sign, so g changes sign at the root: -sign(g') to its
+    // left and sign(g') to its right. Every other piece must carry the matching sign.
+    const int rise = certainly_positive(*result.pieces[root_index].derivative) ? 1 : -1;
+    bool consistent = true;
+    for (std::size_t k = 0; k < result.pieces.size(); ++k) {
+        if (k == root_index) continue;
+        consistent = consistent && sign_of(result.pieces[k].claim) == (k < root_index ? -rise : rise);
+    }
+    if (!consistent) {
+        result.message = "g has more than one sign change on [1, 10]";
+        return false;
+    }
+    result.sign_left = -rise;
+    result.sign_right = rise;
+    return true;
+}
+
+// The densities of C0 and C1 at the certified crossover p*_c, which must meet, and the slopes
+// at p = 1 (a step of its own: what is reported once the root is proved).
+template <class Field>
+void enclose_at_crossover(CubicCrossover<typename Field::Interval>& result, const Field& field) {
+    using I = typename Field::Interval;
+    result.p = result.newton->box;
+    const FamilyLattice<I> c0 = enclose_family_at(Family::C0, *result.p);
+    const FamilyLattice<I> c1 = enclose_family_at(Family::C1, *result.p);
+    if (!c0.phi || !c1.phi) {
+        result.message = "the densities at p*_c are not certified";
+        return;
+    }
+    result.phi_c0 = *c0.phi;
+    result.phi_c1 = *c1.phi;
+    I phi = *c0.phi;
+    if (!intersect(phi, *c0.phi, *c1.phi)) {
+        result.message = "phi_C0 and phi_C1 at p*_c do not overlap";
+        return;
+    }
+    result.phi = phi;
+    result.c0_at_1 = enclose_density_slope(Family::C0, field.integer(1));
+    result.c1_at_1 = enclose_density_slope(Family::C1, field.integer(1));
+    result.certified = true;
+}
+
 }  // namespace
 
 template <class Field>
@@ -286,127 +461,15 @@ CubicCrossover<typename Field::Interval> certify_cubic_crossover_impl(const Fiel
     const int first_pieces = 150;
     const double min_width = 1e-9;
     const std::size_t max_pieces = 20000;
-    std::vector<double> ends;
-    for (int k = 0; k < first_pieces; ++k) ends.push_back(left_end + (right_end - left_end) * k / first_pieces);
-    ends.push_back(right_end);
-    std::vector<std::vector<DInterval>> first;
-    for (std::size_t k = 1; k < ends.size(); ++k) first.push_back({interval_from(DInterval(0.0), ends[k - 1], ends[k])});
-    std::size_t root_pieces = 0;
-    // The sign of g at the left end of the next piece (pieces are proved left to right):
-    // g(1) = 0 exactly (NOTES.md: both lattices are FCC); after a piece, the sign it proved
-    // at its right end. Unknown after an undecided piece.
-    bool left_known = true;
-    int left_sign = 0;
-    auto classify = [&](const std::vector<DInterval>& box) -> Classification<SignPiece> {
-        const double a = box[0].lower(), b = box[0].upper();
-        const Ball p = interval_from(like, a, b);
-        SignPiece piece{box[0], PieceClaim::undecided, "", std::nullopt, std::nullopt};
-        auto record = [&](PieceClaim claim, const std::string& reason, int right_sign) {
-            piece.claim = claim;
-            piece.reason = reason;
-            left_known = true;
-            left_sign = right_sign;
-            return decided(piece);
-        };
-        const auto c0_root = certify_piece_root(Family::C0, p);
-        const auto c1_root = certify_piece_root(Family::C1, p);
-        if (!c0_root || !c1_root) return not_decided<SignPiece>("s not certified over the piece");
-        // The direct enclosure first: it needs no derivative.
-        const Ball direct = c1_root->phi - c0_root->phi;
-        if (a != left_end && (certainly_negative(direct) || certainly_positive(direct))) {
-            const int sign = certainly_negative(direct) ? -1 : 1;
-            piece.difference = outward_double(direct);
-            return record(sign < 0 ? PieceClaim::negative : PieceClaim::positive, "g excludes 0 on the piece (direct)", sign);
-        }
-        Jet<Ball> g{like, like};
-        try {
-            g = difference_jet(*c0_root, *c1_root, p);
-        } catch (const EvaluationFailed& failure) {
-            return not_decided<SignPiece>(failure.what());
-        }
-        piece.derivative = outward_double(g.derivative);
-        // Monotone from a known end: g(a) <= 0 and g' < 0 give g < 0 on (a, b]; likewise > 0.
-        if (left_known && certainly_negative(g.derivative) && left_sign <= 0) {
-            piece.difference = outward_double(g.value);
-            return record(PieceClaim::negative, "g(a) <= 0 (the piece to the left, or g(1) = 0) and g' < 0 on the piece", -1);
-        }
-        if (left_known && certainly_positive(g.derivative) && left_sign >= 0) {
-            piece.difference = outward_double(g.value);
-            return record(PieceClaim::positive, "g(a) >= 0 (the piece to the left, or g(1) = 0) and g' > 0 on the piece", 1);
-        }
-        // The direct enclosure, and if it does not decide, the mean value form
-        // g(m) + g'(P)(P - m) met with it.
-        Ball value = g.value;
-        if (contains_zero(value) && a != left_end) try {
-            const Ball middle = midpoint(p);
-            const Ball centered = difference_value(*c0_root, *c1_root, middle) + g.derivative * (p - middle);
-            if (!intersect(value, centered, g.value)) value = centered;
-        } catch (const EvaluationFailed&) {
-        }
-        piece.difference = outward_double(value);
-        if (a != left_end && (certainly_negative(value) || certainly_positive(value))) {
-            const int sign = certainly_negative(value) ? -1 : 1;
-            return record(sign < 0 ? PieceClaim::negative : PieceClaim::positive,
-                          "g excludes 0 on the piece (mean value form)", sign);
-        }
-        if (a != left_end && !contains_zero(g.derivative) && refine_root(field.integer(0), a, b, digits, result)) {
-            ++root_pieces;
-            return record(PieceClaim::root, "interval Newton: exactly one zero of g in the piece (g' excludes 0)",
-                          certainly_positive(g.derivative) ? 1 : -1);
-        }
-        return not_decided<SignPiece>("neither g nor g' decided");
-    };
+    const std::vector<std::vector<DInterval>> first = first_cubic_pieces(left_end, right_end, first_pieces);
+    CubicSignClassifier<Field> classifier(field, digits, like, left_end, result);
+    auto classify = [&](const std::vector<DInterval>& box) { return classifier.classify(box); };
     auto give_up = [&](const std::vector<DInterval>& box, const std::string& reason) {
-        left_known = false;
-        return SignPiece{box[0], PieceClaim::undecided, reason, std::nullopt, std::nullopt};
+        return classifier.give_up(box, reason);
     };
     result.pieces = partition(first, classify, give_up, SubdivisionLimits{min_width, max_pieces});
-
-    std::size_t undecided = 0, root_index = result.pieces.size();
-    for (std::size_t k = 0; k < result.pieces.size(); ++k) {
-        if (result.pieces[k].claim == PieceClaim::undecided) ++undecided;
-        if (result.pieces[k].claim == PieceClaim::root) root_index = k;
-    }
-    if (undecided > 0) {
-        result.message = std::to_string(undecided) + " pieces of [1, 10] undecided";
-        return result;
-    }
-    if (root_pieces != 1) {
-        result.message = std::to_string(root_pieces) + " pieces with a certified zero of g (expected 1)";
-        return result;
-    }
-    // On the root piece g' has one sign, so g changes sign at the root: -sign(g') to its
-    // left and sign(g') to its right. Every other piece must carry the matching sign.
-    const int rise = certainly_positive(*result.pieces[root_index].derivative) ? 1 : -1;
-    bool consistent = true;
-    for (std::size_t k = 0; k < result.pieces.size(); ++k) {
-        if (k == root_index) continue;
-        consistent = consistent && sign_of(result.pieces[k].claim) == (k < root_index ? -rise : rise);
-    }
-    if (!consistent) {
-        result.message = "g has more than one sign change on [1, 10]";
-        return result;
-    }
-    result.sign_left = -rise;
-    result.sign_right = rise;
-    result.p = result.newton->box;
-    const FamilyLattice<I> c0 = enclose_family_at(Family::C0, *result.p);
-    const FamilyLattice<I> c1 = enclose_family_at(Family::C1, *result.p);
-    if (!c0.phi || !c1.phi) {
-        result.message = "the densities at p*_c are not certified";
-        return result;
-    }
-    result.phi_c0 = *c0.phi;
-    result.phi_c1 = *c1.phi;
-    I phi = *c0.phi;
-    if (!intersect(phi, *c0.phi, *c1.phi)) {
-        result.message = "phi_C0 and phi_C1 at p*_c do not overlap";
-        return result;
-    }
-    result.phi = phi;
-    result.c0_at_1 = enclose_density_slope(Family::C0, field.integer(1));
-    result.c1_at_1 = enclose_density_slope(Family::C1, field.integer(1));
-    result.certified = true;
+    if (!one_sign_change(result, classifier.root_pieces())) return result;
+    enclose_at_crossover(result, field);
     return result;
 }
 
@@ -450,6 +513,47 @@ void octahedral_signs(double a, double b, std::vector<SignPiece>& pieces) {
     pieces.insert(pieces.end(), found.begin(), found.end());
 }
 
+// The piece [1/2, lemma_end], whose sign comes from the lemma Eq. (6) <=> 4^p = 3 (NOTES.md),
+// not from Eq. (6) itself, which nears 0^(1/(2p)) there (a step of its own: a different proof).
+SignPiece octahedral_lemma_piece(double lemma_end) {
+    const DInterval p = interval_from(DInterval(0.0), 0.5, lemma_end);
+    SignPiece piece{p, PieceClaim::undecided, "", std::nullopt, std::nullopt};
+    piece.difference = exp(p * log(DInterval(4.0))) - DInterval(3.0);
+    const bool negative = certainly_negative(*piece.difference);
+    piece.claim = negative ? PieceClaim::negative : PieceClaim::undecided;
+    piece.reason = "sign of Eq. (6) = sign of 4^p - 3 for p > 1/2 (NOTES.md); 'difference' encloses 4^p - 3";
+    return piece;
+}
+
+// The root piece [root_lo, root_hi], decided by the interval Newton run on it (a step of its
+// own: the piece that holds the root).
+template <class I>
+SignPiece octahedral_root_piece(double root_lo, double root_hi, const NewtonResult<I>& newton) {
+    SignPiece piece{interval_from(DInterval(0.0), root_lo, root_hi), PieceClaim::undecided, "", std::nullopt, std::nullopt};
+    const bool unique = newton.status == RootStatus::unique && contains(newton.initial_box, newton.box);
+    piece.derivative = octahedral_equation(variable(piece.p)).derivative;
+    piece.claim = unique ? PieceClaim::root : PieceClaim::undecided;
+    piece.reason = "interval Newton on Eq. (6) (at the working precision): " + newton.reason;
+    return piece;
+}
+
+// Whether B_O0 = U B_O1 with U = [[2,-1,-1],[0,1,0],[1,0,-1]] (det U = -1) at p*_o: O0 and O1
+// are one lattice there (a step of its own: the identity the crossover claims).
+template <class Field>
+bool o1_is_o0(const OctahedralCrossover<typename Field::Interval>& result, const Field& field) {
+    using I = typename Field::Interval;
+    const I zero = field.integer(0);
+    const long unimodular[3][3] = {{2, -1, -1}, {0, 1, 0}, {1, 0, -1}};
+    bool same = result.o0.basis.has_value();
+    for (int i = 0; i < 3 && same; ++i)
+        for (int k = 0; k < 3; ++k) {
+            I entry = zero;
+            for (int j = 0; j < 3; ++j) entry = entry + field.integer(unimodular[i][j]) * (*result.o1_basis_at_root)[j][k];
+            same = same && check_overlap(entry, (*result.o0.basis)[i][k]) == Outcome::proved;
+        }
+    return same;
+}
+
 }  // namespace
 
 template <class Field>
@@ -464,24 +568,9 @@ OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover_impl(
                                    interval_from(field.integer(0), root_lo, root_hi), target, 400);
     result.ln3_over_ln4 = log(field.integer(3)) / log(field.integer(4));
     const NewtonResult<I>& newton = *result.newton;
-    {
-        const DInterval p = interval_from(DInterval(0.0), 0.5, lemma_end);
-        SignPiece piece{p, PieceClaim::undecided, "", std::nullopt, std::nullopt};
-        piece.difference = exp(p * log(DInterval(4.0))) - DInterval(3.0);
-        const bool negative = certainly_negative(*piece.difference);
-        piece.claim = negative ? PieceClaim::negative : PieceClaim::undecided;
-        piece.reason = "sign of Eq. (6) = sign of 4^p - 3 for p > 1/2 (NOTES.md); 'difference' encloses 4^p - 3";
-        result.pieces.push_back(piece);
-    }
+    result.pieces.push_back(octahedral_lemma_piece(lemma_end));
     octahedral_signs(lemma_end, root_lo, result.pieces);
-    {
-        SignPiece piece{interval_from(DInterval(0.0), root_lo, root_hi), PieceClaim::undecided, "", std::nullopt, std::nullopt};
-        const bool unique = newton.status == RootStatus::unique && contains(newton.initial_box, newton.box);
-        piece.derivative = octahedral_equation(variable(piece.p)).derivative;
-        piece.claim = unique ? PieceClaim::root : PieceClaim::undecided;
-        piece.reason = "interval Newton on Eq. (6) (at the working precision): " + newton.reason;
-        result.pieces.push_back(piece);
-    }
+    result.pieces.push_back(octahedral_root_piece(root_lo, root_hi, newton));
     octahedral_signs(root_hi, 1.0, result.pieces);
     result.closed_form = check_overlap(newton.box, *result.ln3_over_ln4);
     std::size_t roots = 0, wrong = 0;
@@ -504,15 +593,7 @@ OctahedralCrossover<typename Field::Interval> certify_octahedral_crossover_impl(
     result.o1_basis_at_root = o1_basis(zero, one, p);
     result.o1_determinant = determinant(*result.o1_basis_at_root);
     result.o1_phi = enclose_ball_volume(p, 3) / abs(*result.o1_determinant);
-    // B_O0 = U B_O1 with U = [[2,-1,-1],[0,1,0],[1,0,-1]] (det U = -1) at p*_o.
-    const long unimodular[3][3] = {{2, -1, -1}, {0, 1, 0}, {1, 0, -1}};
-    bool same = result.o0.basis.has_value();
-    for (int i = 0; i < 3 && same; ++i)
-        for (int k = 0; k < 3; ++k) {
-            I entry = zero;
-            for (int j = 0; j < 3; ++j) entry = entry + field.integer(unimodular[i][j]) * (*result.o1_basis_at_root)[j][k];
-            same = same && check_overlap(entry, (*result.o0.basis)[i][k]) == Outcome::proved;
-        }
+    const bool same = o1_is_o0(result, field);
     result.same_lattice = same;
     bool residuals_vanish = true;
     for (const I& residual : result.o1_residuals) residuals_vanish = residuals_vanish && contains_zero(residual);

@@ -118,15 +118,89 @@ Rational circumradius_bound(const Rational& p, const Field& field) {
     return Rational(17320509, 10000000);
 }
 
-template <class Field>
-PeriodicCertificate<typename Field::Interval> certify(const PeriodicPacking& input, const NormalGuess& guess, const Field& field) {
-    using I = typename Field::Interval;
+// The input's checks, each with its InputError (a step of its own: certify reads as check,
+// separate, scale).
+void check_periodic_input(const PeriodicPacking& input) {
     if (input.p < Rational(1, 2)) throw InputError("periodic packing: p = " + decimal_or_fraction_text(input.p) + " is below 1/2 (not convex)");
     if (input.centers.empty() || input.centers.size() != input.quaternions.size())
         throw InputError("periodic packing: needs as many quaternions as centres, and at least one");
     if (input.centers.size() > max_periodic_particles)
         throw InputError("periodic packing: at most " + std::to_string(max_periodic_particles) + " particles");
     if (determinant(input.cell) == 0) throw InputError("periodic packing: the cell is singular");
+}
+
+// The support function of the rotated body in direction n: h(R^T n) (its own function: each
+// pair's separation needs it for both bodies and both normals).
+template <class Field>
+typename Field::Interval rotated_support(const Superball& body, const Basis<Rational>& rotation, const RationalVector3& n,
+                                         const Field& field) {
+    std::vector<typename Field::Interval> u;
+    for (int c = 0; c < 3; ++c) u.push_back(field.rational(rotation[0][c] * n[0] + rotation[1][c] * n[1] + rotation[2][c] * n[2]));
+    return support_function(body, u);
+}
+
+// Sets pair.normal for the close pair with centre difference d: of the guess and the centre
+// line (which always works once scaled enough), the first that proves the pair, else the one
+// that needs the smaller scale; returns that scale, nothing when the pair is proved (or when
+// neither normal gives a finite ratio: then pair.normal stays zero). One pair's step of certify.
+template <class Field>
+std::optional<Rational> separate_pair(PairSeparation& pair, const RationalVector3& d, const NormalGuess& guess,
+                                      const std::vector<Basis<Rational>>& rotations, const Superball& body, const Field& field) {
+    using I = typename Field::Interval;
+    const std::array<double, 3> approximate{to_double(d[0]), to_double(d[1]), to_double(d[2])};
+    const std::array<double, 3> n = guess ? guess(pair.first, pair.second, approximate) : approximate;
+    RationalVector3 guessed;
+    for (int c = 0; c < 3; ++c) guessed[c] = std::isfinite(n[c]) ? dyadic_near(n[c], 40) : Rational(0);
+    std::optional<Rational> best_factor;
+    for (const RationalVector3& normal : {guessed, d}) {
+        const Rational along = dot(normal, d);
+        if (along <= 0) continue;  // this normal faces away
+        const I reach = rotated_support(body, rotations[pair.first], normal, field) +
+                        rotated_support(body, rotations[pair.second], normal, field);
+        if (certainly_nonnegative(field.rational(along) - reach)) {
+            pair.normal = normal;
+            best_factor.reset();
+            break;
+        }
+        const double ratio = mid_double(upper_point(reach / field.rational(along)));
+        if (!std::isfinite(ratio)) continue;
+        const Rational factor = dyadic_near(ratio, 40) + Rational(1, 1L << 30);
+        if (!best_factor || factor < *best_factor) {
+            best_factor = factor;
+            pair.normal = normal;
+        }
+    }
+    return best_factor;
+}
+
+// The certificate once every pair is separated: the density at the final scale (a step of
+// its own: the proved ending of certify).
+template <class Field>
+void record_proved(PeriodicCertificate<typename Field::Interval>& result, const PeriodicPacking& input, const Field& field) {
+    using I = typename Field::Interval;
+    result.status = Outcome::proved;
+    result.determinant = abs(determinant(result.packing.cell));
+    const I volume = enclose_superball_volume(input.p, field);
+    result.phi = field.integer(static_cast<long>(input.centers.size())) * volume / field.rational(result.determinant);
+    result.reason = result.scale == 1 ? "every pair is separated by a plane" :
+                    "every pair is separated by a plane once the configuration is scaled by " + rational_text(result.scale);
+}
+
+// The configuration scaled by `factor` about the origin: cell and centres (a step of its own:
+// the round that did not prove every pair ends with it).
+template <class I>
+void scale_packing(PeriodicCertificate<I>& result, const Rational& factor) {
+    result.scale *= factor;
+    for (auto& row : result.packing.cell)
+        for (auto& entry : row) entry *= factor;
+    for (auto& center : result.packing.centers)
+        for (auto& entry : center) entry *= factor;
+}
+
+template <class Field>
+PeriodicCertificate<typename Field::Interval> certify(const PeriodicPacking& input, const NormalGuess& guess, const Field& field) {
+    using I = typename Field::Interval;
+    check_periodic_input(input);
     const Superball body = make_superball(3, input.p);
     std::vector<Basis<Rational>> rotations;
     for (const auto& q : input.quaternions) rotations.push_back(rotation_of(q));
@@ -134,11 +208,6 @@ PeriodicCertificate<typename Field::Interval> certify(const PeriodicPacking& inp
     PeriodicCertificate<I> result;
     result.packing = input;
     result.radius = circumradius_bound(input.p, field);
-    auto support = [&](const Basis<Rational>& rotation, const RationalVector3& n) {
-        std::vector<I> u;
-        for (int c = 0; c < 3; ++c) u.push_back(field.rational(rotation[0][c] * n[0] + rotation[1][c] * n[1] + rotation[2][c] * n[2]));
-        return support_function(body, u);
-    };
     // Scaling by s >= 1 only moves centres apart, so a few rounds settle it; the bound keeps a
     // numerically stubborn case from looping.
     for (int round = 0; round < 4; ++round) {
@@ -146,30 +215,7 @@ PeriodicCertificate<typename Field::Interval> certify(const PeriodicPacking& inp
         Rational needed = 1;
         bool all_proved = true;
         for (auto& [pair, d] : close_pairs(result.packing, result.radius)) {
-            const std::array<double, 3> approximate{to_double(d[0]), to_double(d[1]), to_double(d[2])};
-            const std::array<double, 3> n = guess ? guess(pair.first, pair.second, approximate) : approximate;
-            RationalVector3 guessed;
-            for (int c = 0; c < 3; ++c) guessed[c] = std::isfinite(n[c]) ? dyadic_near(n[c], 40) : Rational(0);
-            // The guess, and the centre line (which always works once scaled enough): the
-            // first that proves the pair, else the one that needs the smaller scale.
-            std::optional<Rational> best_factor;
-            for (const RationalVector3& normal : {guessed, d}) {
-                const Rational along = dot(normal, d);
-                if (along <= 0) continue;  // this normal faces away
-                const I reach = support(rotations[pair.first], normal) + support(rotations[pair.second], normal);
-                if (certainly_nonnegative(field.rational(along) - reach)) {
-                    pair.normal = normal;
-                    best_factor.reset();
-                    break;
-                }
-                const double ratio = mid_double(upper_point(reach / field.rational(along)));
-                if (!std::isfinite(ratio)) continue;
-                const Rational factor = dyadic_near(ratio, 40) + Rational(1, 1L << 30);
-                if (!best_factor || factor < *best_factor) {
-                    best_factor = factor;
-                    pair.normal = normal;
-                }
-            }
+            const std::optional<Rational> best_factor = separate_pair(pair, d, guess, rotations, body, field);
             if (best_factor) {
                 all_proved = false;
                 if (*best_factor > needed) needed = *best_factor;
@@ -180,19 +226,10 @@ PeriodicCertificate<typename Field::Interval> certify(const PeriodicPacking& inp
             result.pairs.push_back(pair);
         }
         if (all_proved) {
-            result.status = Outcome::proved;
-            result.determinant = abs(determinant(result.packing.cell));
-            const I volume = enclose_superball_volume(input.p, field);
-            result.phi = field.integer(static_cast<long>(input.centers.size())) * volume / field.rational(result.determinant);
-            result.reason = result.scale == 1 ? "every pair is separated by a plane" :
-                            "every pair is separated by a plane once the configuration is scaled by " + rational_text(result.scale);
+            record_proved(result, input, field);
             return result;
         }
-        result.scale *= needed;
-        for (auto& row : result.packing.cell)
-            for (auto& entry : row) entry *= needed;
-        for (auto& center : result.packing.centers)
-            for (auto& entry : center) entry *= needed;
+        scale_packing(result, needed);
     }
     result.reason = "some pair is not separated even after scaling four times (the support functions are too wide at this precision)";
     return result;
