@@ -141,108 +141,127 @@ void merge(std::vector<MergedRange>& ranges, const PieceEnds& piece, const std::
         ranges.push_back({piece.lo, piece.hi, words});
 }
 
-std::string check_audit(const Json& claim, Context& context) {
-    const Json& document = context.document();
-    const Json& data = context.member(claim, "data", "claim");
-    const Json& inputs = context.member(document, "inputs", "");
-    const Json& proof = context.member(document, "proof", "");
-    const mpfr_prec_t precision = context.precision();
-    const std::string family = read_family(context, data, inputs);
-    check_family_definition(context, family, data);
-    const bool s6 = family == "S6";
-    const PieceEnds range = read_piece_range(context, context.member(data, "range", "claim.data"), "claim.data.range");
-    const PieceEnds input_range = read_piece_range(context, context.member(inputs, "range", "inputs"), "inputs.range");
-    context.require(input_range.lo == range.lo && input_range.hi == range.hi, "inputs.range",
-                    "the input range differs from the claim's");
-    require_family_domain(context, family, range.lo, range.hi, "inputs.range");
-    if (context.string_at(data, "lattice", "claim.data") != "published")
-        context.malformed("claim.data.lattice", "expected \"published\" (the lattice of the paper)");
-    if (context.string_at(proof, "kind", "proof") != "audit") context.malformed("proof.kind", "expected \"audit\"");
-    const Json& pieces = context.member(data, "pieces", "claim.data");
-    const Json& proofs = context.member(proof, "pieces", "proof");
-    if (!pieces.is_array() || !proofs.is_array()) context.malformed("claim.data.pieces", "expected arrays of pieces");
-    context.require(!pieces.empty(), "claim.data.pieces", "no pieces");
-    context.require(proofs.size() == pieces.size(), "proof.pieces", "one proof per piece of the claim is needed");
-    const FamilyForms forms = lattice_forms(family);
-    std::vector<std::optional<Box>> s6_roots;
-    if (s6) {
-        std::vector<PieceEnds> ends;
-        for (std::size_t k = 0; k < pieces.size(); ++k) {
-            const std::string claim_path = "claim.data.pieces[" + std::to_string(k) + "]";
-            ends.push_back(read_piece_range(context, context.member(pieces[k], "p", claim_path), claim_path + ".p"));
-        }
-        s6_roots = replay_s6_chain(context, ends, proofs, context.member(proof, "anchor", "proof"));
-    }
-
-    Chain chain;
-    std::vector<MergedRange> merged;
-    bool refutes_o1 = false;  // an O1 piece overlapping for every p, below p*_o
-    const Real crossover = log(integer(3, precision)) / log(integer(4, precision));
-    mpq_class reached = range.lo;  // the pieces so far cover [range.lo, reached]
+// The S6 chain's root boxes, one per piece (nullopt where the chain does not reach): the branch
+// is followed from the point proof at p = 9/10 over all pieces before any piece is checked.
+std::vector<std::optional<Box>> replay_s6_roots(Context& context, const Json& pieces, const Json& proof,
+                                                const Json& proofs) {
+    std::vector<PieceEnds> ends;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         const std::string claim_path = "claim.data.pieces[" + std::to_string(k) + "]";
+        ends.push_back(read_piece_range(context, context.member(pieces[k], "p", claim_path), claim_path + ".p"));
+    }
+    return replay_s6_chain(context, ends, proofs, context.member(proof, "anchor", "proof"));
+}
+
+// The walk over an audit's pieces in order: they cover the range without gaps; each decided
+// piece gets its parameters by the family's kind of proof (S6 chain, continuation, or its own
+// parameter proof) and its verdict replayed; the verdicts are merged for the sentence.
+class AuditWalk {
+public:
+    AuditWalk(Context& context, const std::string& family, const FamilyForms& forms,
+              std::vector<std::optional<Box>> s6_roots, const mpq_class& start)
+        : context_(context), family_(family), s6_(family == "S6"), forms_(forms), s6_roots_(std::move(s6_roots)),
+          precision_(context.precision()), crossover_(log(integer(3, precision_)) / log(integer(4, precision_))),
+          reached_(start) {}
+
+    // Piece k: its place in the cover, its verdict, and what the verdict rests on.
+    void check_piece(const Json& claimed, const Json& proof, std::size_t k) {
+        const std::string claim_path = "claim.data.pieces[" + std::to_string(k) + "]";
         const std::string proof_path = "proof.pieces[" + std::to_string(k) + "]";
-        const PieceEnds piece = read_piece_range(context, context.member(pieces[k], "p", claim_path), claim_path + ".p");
-        context.require(piece.lo == reached, claim_path + ".p",
-                        piece.lo > reached ? "a gap in the cover of the range" : "the pieces overlap or are out of order");
-        reached = piece.hi;
-        const Real p = hull(rational(piece.lo, precision), rational(piece.hi, precision));
-        const std::string verdict = context.string_at(pieces[k], "verdict", claim_path);
+        const PieceEnds piece = read_piece_range(context_, context_.member(claimed, "p", claim_path), claim_path + ".p");
+        context_.require(piece.lo == reached_, claim_path + ".p",
+                         piece.lo > reached_ ? "a gap in the cover of the range" : "the pieces overlap or are out of order");
+        reached_ = piece.hi;
+        const Real p = hull(rational(piece.lo, precision_), rational(piece.hi, precision_));
+        const std::string verdict = context_.string_at(claimed, "verdict", claim_path);
         const bool decided = verdict != "undecided";
         // overlapping_at_point: the claim is about the one point p = at of the piece.
         const bool at_point = verdict == "overlapping_at_point";
         std::optional<mpq_class> at;
         if (at_point) {
-            at = context.rational_at(pieces[k], "at", claim_path);
-            context.require(piece.lo <= *at && *at <= piece.hi, claim_path + ".at", "the point is not in the piece");
+            at = context_.rational_at(claimed, "at", claim_path);
+            context_.require(piece.lo <= *at && *at <= piece.hi, claim_path + ".at", "the point is not in the piece");
         }
-        const Real p_claimed = at ? rational(*at, precision) : p;
+        const Real p_claimed = at ? rational(*at, precision_) : p;
         const std::string parameters_path = proof_path + ".parameters";
-        const Json& parameters = context.member(proofs[k], "parameters", proof_path);
-        const Json& lattice = context.member(proofs[k], "lattice", proof_path);
+        const Json& parameters = context_.member(proof, "parameters", proof_path);
+        const Json& lattice = context_.member(proof, "lattice", proof_path);
         if (!decided) {
-            merge(merged, piece, "undecided");
+            merge(merged_, piece, "undecided");
             // Nothing is proved here: no lattice proof (O1, D14 keep their box for the chain, below).
-            if (!lattice.is_null()) context.malformed(proof_path + ".lattice", "an undecided piece proves nothing: expected null");
-            if (!continued(family) && !s6 && !parameters.is_null())
-                context.malformed(parameters_path, "an undecided piece proves nothing: expected null");
+            if (!lattice.is_null()) context_.malformed(proof_path + ".lattice", "an undecided piece proves nothing: expected null");
+            if (!continued(family_) && !s6_ && !parameters.is_null())
+                context_.malformed(parameters_path, "an undecided piece proves nothing: expected null");
         }
-        NamedReals symbols;
-        if (s6) {
-            if (!decided) continue;
-            context.require(!at_point, claim_path + ".verdict", "S6 pieces are decided for every p of the piece or not at all");
-            context.require(s6_roots[k].has_value(), parameters_path,
-                            "the S6 branch through the point proof at p = 9/10 is not followed onto this piece");
-            const std::vector<std::string> names = kkt_symbols();
-            for (std::size_t i = 0; i < names.size(); ++i) symbols.push_back({names[i], (*s6_roots[k])[i]});
-        } else if (continued(family)) {
-            const auto replayed = replay_continued_piece(context, family, parameters, parameters_path, piece, p, chain, k == 0);
-            if (!decided) continue;
-            context.require(replayed.has_value(), parameters_path,
-                            std::string("the branch through ") + (family == "O1" ? "(1/6, 2/3)" : "(1/3, 1/6, 1/2)") +
-                                " at p = 1/2 is not followed onto this piece");
-            symbols = continued_symbols(
-                family, at ? root_at(context, family, replayed->box, p_claimed, parameters_path) : replayed->root, p_claimed);
-        } else {
-            if (!decided) continue;
-            context.require(!parameters.is_null(), parameters_path, "a decided piece needs its parameter proof");
-            // The piece's proof holds for every p of the piece, so also at the point.
-            symbols = replay_family_parameters(context, family, parameters, parameters_path, p_claimed, claim_path + ".p").symbols;
-        }
-        const FamilyVerdict result = check_family_verdict(context, forms, symbols, p_claimed, at_point ? "overlapping" : verdict,
-                                                          pieces[k], claim_path, lattice, proof_path + ".lattice");
+        const std::optional<NamedReals> symbols =
+            piece_symbols(parameters, parameters_path, piece, p, p_claimed, decided, at_point, claim_path, k);
+        if (!symbols) return;
+        const FamilyVerdict result = check_family_verdict(context_, forms_, *symbols, p_claimed, at_point ? "overlapping" : verdict,
+                                                          claimed, claim_path, lattice, proof_path + ".lattice");
         if (at_point)
-            merge(merged, piece, "undecided, but overlapping at one certified point per piece (witness " + triple_text(result.witness) + ")");
+            merge(merged_, piece, "undecided, but overlapping at one certified point per piece (witness " + triple_text(result.witness) + ")");
         else if (result.packing)
-            merge(merged, piece, "packing with " + std::to_string(result.contacts) + " contacts");
+            merge(merged_, piece, "packing with " + std::to_string(result.contacts) + " contacts");
         else
-            merge(merged, piece, "overlapping (witness " + triple_text(result.witness) + ")");
-        refutes_o1 = refutes_o1 || (family == "O1" && !result.packing && !at_point &&
-                                    less(rational(piece.hi, precision), crossover));
+            merge(merged_, piece, "overlapping (witness " + triple_text(result.witness) + ")");
+        refutes_o1_ = refutes_o1_ || (family_ == "O1" && !result.packing && !at_point &&
+                                      less(rational(piece.hi, precision_), crossover_));
     }
-    context.require(reached == range.hi, "claim.data.pieces", "the pieces stop before the end of the range");
 
-    // The sentence, from the verdicts verified above.
+    const mpq_class& reached() const { return reached_; }
+    const std::vector<MergedRange>& merged() const { return merged_; }
+    // An O1 piece overlapping for every p, below p*_o.
+    bool refutes_o1() const { return refutes_o1_; }
+
+private:
+    // The family's symbols on piece k at p_claimed (the piece's p, or its point `at`), by the
+    // family's kind of proof; nullopt for an undecided piece, after the continuation has
+    // still replayed its box (an undecided piece may carry the chain on).
+    std::optional<NamedReals> piece_symbols(const Json& parameters, const std::string& parameters_path, const PieceEnds& piece,
+                                            const Real& p, const Real& p_claimed, bool decided, bool at_point,
+                                            const std::string& claim_path, std::size_t k) {
+        NamedReals symbols;
+        if (s6_) {
+            if (!decided) return std::nullopt;
+            context_.require(!at_point, claim_path + ".verdict", "S6 pieces are decided for every p of the piece or not at all");
+            context_.require(s6_roots_[k].has_value(), parameters_path,
+                             "the S6 branch through the point proof at p = 9/10 is not followed onto this piece");
+            const std::vector<std::string> names = kkt_symbols();
+            for (std::size_t i = 0; i < names.size(); ++i) symbols.push_back({names[i], (*s6_roots_[k])[i]});
+        } else if (continued(family_)) {
+            const auto replayed = replay_continued_piece(context_, family_, parameters, parameters_path, piece, p, chain_, k == 0);
+            if (!decided) return std::nullopt;
+            context_.require(replayed.has_value(), parameters_path,
+                             std::string("the branch through ") + (family_ == "O1" ? "(1/6, 2/3)" : "(1/3, 1/6, 1/2)") +
+                                 " at p = 1/2 is not followed onto this piece");
+            symbols = continued_symbols(
+                family_, at_point ? root_at(context_, family_, replayed->box, p_claimed, parameters_path) : replayed->root,
+                p_claimed);
+        } else {
+            if (!decided) return std::nullopt;
+            context_.require(!parameters.is_null(), parameters_path, "a decided piece needs its parameter proof");
+            // The piece's proof holds for every p of the piece, so also at the point.
+            symbols = replay_family_parameters(context_, family_, parameters, parameters_path, p_claimed, claim_path + ".p").symbols;
+        }
+        return symbols;
+    }
+
+    Context& context_;
+    const std::string family_;
+    const bool s6_;
+    const FamilyForms& forms_;
+    const std::vector<std::optional<Box>> s6_roots_;
+    const mpfr_prec_t precision_;
+    const Real crossover_;
+    mpq_class reached_;  // the pieces so far cover [range.lo, reached_]
+    Chain chain_;
+    std::vector<MergedRange> merged_;
+    bool refutes_o1_ = false;
+};
+
+// The sentence, from the verdicts verified by the walk.
+std::string audit_sentence(const std::string& family, const PieceEnds& range, const AuditWalk& walk) {
+    const bool s6 = family == "S6";
     const std::string lattice_text =
         family == "O1" ? std::string("the O1 lattice of ") + paper_citation +
                              " (Sec. IV.B: basis Eq. (15), (q, s) on the root branch of Eq. (16) through Minkowski's (1/6, 2/3) "
@@ -269,11 +288,41 @@ std::string check_audit(const Json& claim, Context& context) {
         text += " The branch is followed by continuation: a Krawczyk box per piece, each holding the root of the next "
                 "piece at their shared end; a piece without a box breaks the chain.";
     text += " The verdicts, merged:";
-    for (const MergedRange& entry : merged)
+    for (const MergedRange& entry : walk.merged())
         text += " [" + rational_words(entry.lo) + ", " + rational_words(entry.hi) + "] " + entry.words + ";";
     text.back() = '.';
-    if (refutes_o1) text += refutation_words(o1_packs);
+    if (walk.refutes_o1()) text += refutation_words(o1_packs);
     return text;
+}
+
+std::string check_audit(const Json& claim, Context& context) {
+    const Json& document = context.document();
+    const Json& data = context.member(claim, "data", "claim");
+    const Json& inputs = context.member(document, "inputs", "");
+    const Json& proof = context.member(document, "proof", "");
+    const std::string family = read_family(context, data, inputs);
+    check_family_definition(context, family, data);
+    const PieceEnds range = read_piece_range(context, context.member(data, "range", "claim.data"), "claim.data.range");
+    const PieceEnds input_range = read_piece_range(context, context.member(inputs, "range", "inputs"), "inputs.range");
+    context.require(input_range.lo == range.lo && input_range.hi == range.hi, "inputs.range",
+                    "the input range differs from the claim's");
+    require_family_domain(context, family, range.lo, range.hi, "inputs.range");
+    if (context.string_at(data, "lattice", "claim.data") != "published")
+        context.malformed("claim.data.lattice", "expected \"published\" (the lattice of the paper)");
+    if (context.string_at(proof, "kind", "proof") != "audit") context.malformed("proof.kind", "expected \"audit\"");
+    const Json& pieces = context.member(data, "pieces", "claim.data");
+    const Json& proofs = context.member(proof, "pieces", "proof");
+    if (!pieces.is_array() || !proofs.is_array()) context.malformed("claim.data.pieces", "expected arrays of pieces");
+    context.require(!pieces.empty(), "claim.data.pieces", "no pieces");
+    context.require(proofs.size() == pieces.size(), "proof.pieces", "one proof per piece of the claim is needed");
+    const FamilyForms forms = lattice_forms(family);
+    std::vector<std::optional<Box>> s6_roots;
+    if (family == "S6") s6_roots = replay_s6_roots(context, pieces, proof, proofs);
+
+    AuditWalk walk(context, family, forms, std::move(s6_roots), range.lo);
+    for (std::size_t k = 0; k < pieces.size(); ++k) walk.check_piece(pieces[k], proofs[k], k);
+    context.require(walk.reached() == range.hi, "claim.data.pieces", "the pieces stop before the end of the range");
+    return audit_sentence(family, range, walk);
 }
 
 const ClaimKindRegistration registration("audit", check_audit);

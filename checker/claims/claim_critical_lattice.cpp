@@ -37,22 +37,15 @@ bool whole_domain(const std::vector<ChartBox>& boxes) {
 
 std::string count_words(long n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
 
-std::string check_critical_lattice(const Json& claim, Context& context) {
-    // The chart's powers |x|^(2p - 1) need 2p > 1 (NOTES.md 12.2).
-    const ClaimParts parts = read_claim_parts(claim, context, "critical-lattice", "claim.data.p", "the chart needs p > 1/2");
-    const Json &data = parts.data, &inputs = parts.inputs, &proof = parts.proof;
-    const mpq_class& p = parts.p;
-    const mpfr_prec_t precision = context.precision();
+// The start boxes of proof.boxes (non-empty, at most max_chart_boxes), read, with one tree
+// string per box in proof.trees.
+struct StartBoxes {
+    std::vector<ChartBox> boxes;
+    const Json& trees;
+};
 
-    // 1. T and V(K).
-    const CriticalBound bound = read_critical_bound(context, data, p);
-    const Real &threshold = bound.threshold, &volume = bound.volume;
-
-    // 2. The closing regions.
-    const ClosingRegions regions =
-        replay_closing_regions(context, context.member(proof, "regions", "proof"), "proof.regions", p, threshold);
-
-    // The start boxes and their trees.
+// Reads the start boxes, and checks that each has its tree, before any tree is replayed.
+StartBoxes read_start_boxes(Context& context, const Json& proof) {
     const Json& box_list = context.member(proof, "boxes", "proof");
     const Json& tree_list = context.member(proof, "trees", "proof");
     if (!box_list.is_array() || box_list.empty()) context.malformed("proof.boxes", "expected a non-empty array of chart boxes");
@@ -64,6 +57,56 @@ std::string check_critical_lattice(const Json& claim, Context& context) {
     std::vector<ChartBox> boxes;
     for (std::size_t k = 0; k < box_list.size(); ++k)
         boxes.push_back(read_chart_box(context, box_list[k], "proof.boxes[" + std::to_string(k) + "]"));
+    return {boxes, tree_list};
+}
+
+// The sentence: the bound on the domain the boxes cover (the whole chart domain, or the boxes
+// alone), with what the replay counted.
+std::string critical_lattice_sentence(const mpq_class& p, bool whole, std::size_t box_count, const CriticalBound& bound,
+                                      const Real& upper_phi, const TreeCounts& counts, const ClosingRegions& regions) {
+    std::string leaves;
+    long total = 0;
+    for (int r = 0; r < leaf_reasons; ++r) {
+        leaves += std::string(r ? ", " : "") + reason_name(static_cast<LeafReason>(r)) + " " + std::to_string(counts.leaves[r]);
+        total += counts.leaves[r];
+    }
+    const std::string where =
+        whole ? whole_domain_words(0, box_count)
+              : "on the " + count_words(static_cast<long>(box_count), "chart box", "chart boxes") +
+                    " of proof.boxes (the chart of NOTES.md 12.2)";
+    const std::string which = whole ? "whose chart basis satisfies its configuration"
+                                    : "whose chart basis lies in one of these boxes and satisfies the box's configuration, "
+                                      "with b1 longest in the max norm among its orbit (NOTES.md 12.2),";
+    const std::string consequence =
+        whole ? std::string(whole_domain_consequence)
+              : "so the density of each such packing is at most ";
+    return "At p = " + exact_text(p) + ", " + where + ": every lattice packing of the superball K = {|x|^(2p) + |y|^(2p) + " +
+           "|z|^(2p) <= 1} " + which + " has |det| >= T >= " + lower_end_words(bound.threshold) + " (claim.data.threshold), " +
+           consequence + upper_end_words(upper_phi) + " (the upper end of claim.data.upper_phi, which holds V(K) / T; V(K) in " +
+           enclosure_words(bound.volume) + ", " + volume_words + "). The " + count_words(static_cast<long>(box_count), "tree", "trees") +
+           " replay " + count_words(counts.nodes, "box", "boxes") + " with " + std::to_string(total) + " leaves (" + leaves +
+           "), " + count_words(static_cast<long>(regions.regions.size()), "closing region", "closing regions") + " and " +
+           count_words(static_cast<long>(regions.images.size()), "image", "images") + " in the chart.";
+}
+
+std::string check_critical_lattice(const Json& claim, Context& context) {
+    // The chart's powers |x|^(2p - 1) need 2p > 1 (NOTES.md 12.2).
+    const ClaimParts parts = read_claim_parts(claim, context, "critical-lattice", "claim.data.p", "the chart needs p > 1/2");
+    const Json &data = parts.data, &inputs = parts.inputs, &proof = parts.proof;
+    const mpq_class& p = parts.p;
+    const mpfr_prec_t precision = context.precision();
+
+    // 1. T and V(K).
+    const CriticalBound bound = read_critical_bound(context, data, p);
+    const Real& threshold = bound.threshold;
+
+    // 2. The closing regions.
+    const ClosingRegions regions =
+        replay_closing_regions(context, context.member(proof, "regions", "proof"), "proof.regions", p, threshold);
+
+    // The start boxes and their trees.
+    const StartBoxes start = read_start_boxes(context, proof);
+    const std::vector<ChartBox>& boxes = start.boxes;
     const std::string domain = context.string_at(data, "domain", "claim.data");
     if (domain != "whole" && domain != "boxes") context.malformed("claim.data.domain", "expected \"whole\" or \"boxes\"");
     const bool whole = whole_domain(boxes);
@@ -76,39 +119,16 @@ std::string check_critical_lattice(const Json& claim, Context& context) {
     TreeCounts counts;
     for (std::size_t k = 0; k < boxes.size(); ++k) {
         const std::string path = "proof.trees[" + std::to_string(k) + "]";
-        if (!tree_list[k].is_string()) context.malformed(path, "expected a tree string");
+        if (!start.trees[k].is_string()) context.malformed(path, "expected a tree string");
         context.current_step = path;
-        replay_tree(context, tree_list[k].get_ref<const std::string&>(), boxes[k], setting, path, counts);
+        replay_tree(context, start.trees[k].get_ref<const std::string&>(), boxes[k], setting, path, counts);
     }
 
     // 4. The density bound.
     const Real upper_phi = read_upper_phi(context, data, bound);
     context.rational_at(inputs, "gap", "inputs");  // the producer's gap to the best lattice, informational
     check_p_decimal(context, inputs, p);
-
-    std::string leaves;
-    long total = 0;
-    for (int r = 0; r < leaf_reasons; ++r) {
-        leaves += std::string(r ? ", " : "") + reason_name(static_cast<LeafReason>(r)) + " " + std::to_string(counts.leaves[r]);
-        total += counts.leaves[r];
-    }
-    const std::string where =
-        whole ? whole_domain_words(0, boxes.size())
-              : "on the " + count_words(static_cast<long>(boxes.size()), "chart box", "chart boxes") +
-                    " of proof.boxes (the chart of NOTES.md 12.2)";
-    const std::string which = whole ? "whose chart basis satisfies its configuration"
-                                    : "whose chart basis lies in one of these boxes and satisfies the box's configuration, "
-                                      "with b1 longest in the max norm among its orbit (NOTES.md 12.2),";
-    const std::string consequence =
-        whole ? std::string(whole_domain_consequence)
-              : "so the density of each such packing is at most ";
-    return "At p = " + exact_text(p) + ", " + where + ": every lattice packing of the superball K = {|x|^(2p) + |y|^(2p) + " +
-           "|z|^(2p) <= 1} " + which + " has |det| >= T >= " + lower_end_words(threshold) + " (claim.data.threshold), " +
-           consequence + upper_end_words(upper_phi) + " (the upper end of claim.data.upper_phi, which holds V(K) / T; V(K) in " +
-           enclosure_words(volume) + ", " + volume_words + "). The " + count_words(static_cast<long>(boxes.size()), "tree", "trees") +
-           " replay " + count_words(counts.nodes, "box", "boxes") + " with " + std::to_string(total) + " leaves (" + leaves +
-           "), " + count_words(static_cast<long>(regions.regions.size()), "closing region", "closing regions") + " and " +
-           count_words(static_cast<long>(regions.images.size()), "image", "images") + " in the chart.";
+    return critical_lattice_sentence(p, whole, boxes.size(), bound, upper_phi, counts, regions);
 }
 
 const ClaimKindRegistration registration("critical-lattice", check_critical_lattice);

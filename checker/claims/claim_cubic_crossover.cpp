@@ -92,6 +92,102 @@ int parse_sign(Context& context, const std::string& text, const std::string& pat
     return 0;
 }
 
+// The root piece p: h' has one sign `rise` on it and interval Newton maps it inside itself, so
+// it holds exactly one zero of h; Newton is iterated while it tightens. Returns the root's
+// enclosure and sets rise.
+Real replay_root_piece(Context& context, const PieceRoots& known, const Real& p, const std::string& path, int& rise) {
+    const mpfr_prec_t precision = context.precision();
+    const ValueAndSlope h = crossover_at(known, p);
+    rise = sign_of(h.slope);
+    context.require(rise != 0, path, "h' may vanish on the piece: " + text(h.slope));
+    const Real center = midpoint(p);
+    const Real image = center - crossover_at(known, center).value / h.slope;
+    context.require(interior_subset(image, p), path, "N(P) = " + text(image) + " is not inside P = " + text(p));
+    Real current(precision);
+    intersect(current, image, p);
+    for (int iteration = 0; iteration < 200; ++iteration) {
+        const Real mid = midpoint(current);
+        const Real next_image = mid - crossover_at(known, mid).value / crossover_at(known, current).slope;
+        Real next(precision);
+        context.require(intersect(next, next_image, current), path, "a Newton iterate lost the root (inconsistent)");
+        const Width before = width(current), after = width(next);
+        current = next;
+        if (after == 0.0 || after >= 0.75 * before) break;
+    }
+    return current;
+}
+
+// What the sign partition of (1, to] proves: each piece's sign of h (0 for the root piece), the
+// root piece's index, the root's enclosure, the sign of h' there, both contact roots on that
+// piece, and how many extra pieces the checker cut.
+struct SignPartition {
+    std::vector<int> claims;
+    std::size_t root_index;
+    Real root;
+    int rise = 0;
+    PieceRoots root_roots;
+    long bisections = 0;
+};
+
+// The pieces: they tile (from, to] in order; each has its contact roots replayed, then either
+// holds the one root of h or has h of one stated sign, proved from the sign at its lower end.
+SignPartition replay_sign_partition(Context& context, const Json& pieces, const mpq_class& from, const mpq_class& to) {
+    const mpfr_prec_t precision = context.precision();
+    Real end = rational(from, precision);  // exact: 1
+    int left = 0;                          // the sign of h at `end`: h(1) = 0
+    const Real unknown(precision);
+    SignPartition partition{{}, pieces.size(), unknown, 0, PieceRoots{unknown, unknown}, 0};
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const std::string path = "proof.pieces[" + std::to_string(k) + "]";
+        const Json& piece = pieces[k];
+        const Real p = context.interval(context.member(piece, "p", path), path + ".p");
+        context.require(mpfr_equal_p(p.lo(), end.hi()) != 0, path + ".p",
+                        "does not start where the previous piece ends (" + text(end) + ")");
+        context.require(mpfr_cmp(p.lo(), p.hi()) < 0, path + ".p", "an empty piece");
+        end = upper_point(p);
+        const CubicEquation c0{false, p}, c1{true, p};
+        const PieceRoots known{replay_smallest_root(context, c0, context.member(piece, "s_C0", path), path + ".s_C0"),
+                               replay_smallest_root(context, c1, context.member(piece, "s_C1", path), path + ".s_C1")};
+        context.current_step = path;
+        const std::string stated = context.string_at(piece, "claim", path);
+        if (stated == "root") {
+            context.require(partition.root_index == pieces.size(), path + ".claim", "a second root piece");
+            partition.root_index = k;
+            partition.root = replay_root_piece(context, known, p, path, partition.rise);
+            partition.root_roots = known;
+            check_encloses(context, context.member(piece, "root", path), path + ".root", partition.root);
+            partition.claims.push_back(0);
+            left = partition.rise;
+            continue;
+        }
+        const int sign = parse_sign(context, stated, path + ".claim");
+        context.require(prove_sign(known, p, sign, left, 0, partition.bisections), path,
+                        "the checker could not prove h " + stated + " on the piece");
+        partition.claims.push_back(sign);
+        left = sign;
+    }
+    context.require(mpfr_equal_p(end.hi(), rational(to, precision).hi()) != 0, "proof.pieces",
+                    "the pieces end at " + text(end) + ", not at the end of the interval");
+    context.require(partition.root_index < pieces.size(), "proof.pieces", "no root piece");
+    return partition;
+}
+
+// phi*_c from both families at the root: each encloses it, so their meet does.
+Real crossover_density(Context& context, const SignPartition& partition) {
+    const mpfr_prec_t precision = context.precision();
+    const Real& root = partition.root;
+    const CubicEquation c0{false, root}, c1{true, root};
+    const ValueAndSlope t = halving_shift(root), volume = superball_volume_with_slope(root);
+    const Real unused_slope(precision);  // only the values are needed here
+    const ValueAndSlope s0{refine_known_root(c0, partition.root_roots.s0), unused_slope};
+    const ValueAndSlope s1{refine_known_root(c1, partition.root_roots.s1), unused_slope};
+    const Real phi0 = volume.value / cubic_abs_determinant(false, s0, t).value;
+    const Real phi1 = volume.value / cubic_abs_determinant(true, s1, t).value;
+    Real phi(precision);
+    context.require(intersect(phi, phi0, phi1), "claim.data.phi", "phi_C0 and phi_C1 at p*_c are disjoint");
+    return phi;
+}
+
 std::string check_cubic_crossover(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
@@ -112,69 +208,15 @@ std::string check_cubic_crossover(const Json& claim, Context& context) {
     const Json& pieces = context.member(proof, "pieces", "proof");
     if (!pieces.is_array()) context.malformed("proof.pieces", "expected an array");
     context.require(!pieces.empty(), "proof.pieces", "no pieces");
-
-    Real end = rational(from, precision);  // exact: 1
-    int left = 0;                          // the sign of h at `end`: h(1) = 0
-    std::vector<int> claims;
-    std::size_t root_index = pieces.size();
-    Real root(precision);
-    int rise = 0;
-    PieceRoots root_roots{root, root};
-    long bisections = 0;
-    for (std::size_t k = 0; k < pieces.size(); ++k) {
-        const std::string path = "proof.pieces[" + std::to_string(k) + "]";
-        const Json& piece = pieces[k];
-        const Real p = context.interval(context.member(piece, "p", path), path + ".p");
-        context.require(mpfr_equal_p(p.lo(), end.hi()) != 0, path + ".p",
-                        "does not start where the previous piece ends (" + text(end) + ")");
-        context.require(mpfr_cmp(p.lo(), p.hi()) < 0, path + ".p", "an empty piece");
-        end = upper_point(p);
-        const CubicEquation c0{false, p}, c1{true, p};
-        const PieceRoots known{replay_smallest_root(context, c0, context.member(piece, "s_C0", path), path + ".s_C0"),
-                               replay_smallest_root(context, c1, context.member(piece, "s_C1", path), path + ".s_C1")};
-        context.current_step = path;
-        const std::string stated = context.string_at(piece, "claim", path);
-        if (stated == "root") {
-            context.require(root_index == pieces.size(), path + ".claim", "a second root piece");
-            root_index = k;
-            const ValueAndSlope h = crossover_at(known, p);
-            rise = sign_of(h.slope);
-            context.require(rise != 0, path, "h' may vanish on the piece: " + text(h.slope));
-            const Real center = midpoint(p);
-            const Real image = center - crossover_at(known, center).value / h.slope;
-            context.require(interior_subset(image, p), path, "N(P) = " + text(image) + " is not inside P = " + text(p));
-            Real current(precision);
-            intersect(current, image, p);
-            for (int iteration = 0; iteration < 200; ++iteration) {
-                const Real mid = midpoint(current);
-                const Real next_image = mid - crossover_at(known, mid).value / crossover_at(known, current).slope;
-                Real next(precision);
-                context.require(intersect(next, next_image, current), path, "a Newton iterate lost the root (inconsistent)");
-                const Width before = width(current), after = width(next);
-                current = next;
-                if (after == 0.0 || after >= 0.75 * before) break;
-            }
-            root = current;
-            root_roots = known;
-            check_encloses(context, context.member(piece, "root", path), path + ".root", root);
-            claims.push_back(0);
-            left = rise;
-            continue;
-        }
-        const int sign = parse_sign(context, stated, path + ".claim");
-        context.require(prove_sign(known, p, sign, left, 0, bisections), path,
-                        "the checker could not prove h " + stated + " on the piece");
-        claims.push_back(sign);
-        left = sign;
-    }
-    context.require(mpfr_equal_p(end.hi(), rational(to, precision).hi()) != 0, "proof.pieces",
-                    "the pieces end at " + text(end) + ", not at the end of the interval");
-    context.require(root_index < pieces.size(), "proof.pieces", "no root piece");
+    const SignPartition partition = replay_sign_partition(context, pieces, from, to);
+    const std::vector<int>& claims = partition.claims;
+    const std::size_t root_index = partition.root_index;
 
     context.current_step = "claim.data";
     const int sign_left = parse_sign(context, context.string_at(data, "sign_left", "claim.data"), "claim.data.sign_left");
     const int sign_right = parse_sign(context, context.string_at(data, "sign_right", "claim.data"), "claim.data.sign_right");
-    context.require(sign_right == rise && sign_left == -rise, "claim.data.sign_right", "h changes sign the other way at the root");
+    context.require(sign_right == partition.rise && sign_left == -partition.rise, "claim.data.sign_right",
+                    "h changes sign the other way at the root");
     for (std::size_t k = 0; k < claims.size(); ++k)
         if (k != root_index)
             context.require(claims[k] == (k < root_index ? sign_left : sign_right),
@@ -184,22 +226,13 @@ std::string check_cubic_crossover(const Json& claim, Context& context) {
     context.require(densest_left == (sign_left < 0 ? "C0" : "C1"), "claim.data.densest_left", "g < 0 means C0 is denser");
     context.require(densest_right == (sign_right < 0 ? "C0" : "C1"), "claim.data.densest_right", "g > 0 means C1 is denser");
 
-    const Real stated_p = proved_enclosure(context, context.member(data, "p", "claim.data"), "claim.data.p", root);
-    // phi*_c from both families at the root: each encloses it, so their meet does.
-    const CubicEquation c0{false, root}, c1{true, root};
-    const ValueAndSlope t = halving_shift(root), volume = superball_volume_with_slope(root);
-    const Real unused_slope(precision);  // only the values are needed here
-    const ValueAndSlope s0{refine_known_root(c0, root_roots.s0), unused_slope};
-    const ValueAndSlope s1{refine_known_root(c1, root_roots.s1), unused_slope};
-    const Real phi0 = volume.value / cubic_abs_determinant(false, s0, t).value;
-    const Real phi1 = volume.value / cubic_abs_determinant(true, s1, t).value;
-    Real phi(precision);
-    context.require(intersect(phi, phi0, phi1), "claim.data.phi", "phi_C0 and phi_C1 at p*_c are disjoint");
+    const Real stated_p = proved_enclosure(context, context.member(data, "p", "claim.data"), "claim.data.p", partition.root);
+    const Real phi = crossover_density(context, partition);
     const Real stated_phi = proved_enclosure(context, context.member(data, "phi", "claim.data"), "claim.data.phi", phi);
     // For measurements (NOTES.md 8.5): how often the checker had to cut a stored piece, and its own p*_c.
     if (std::getenv("SUPERPACK_CHECKER_TRACE"))
-        std::cerr << "cubic-crossover: checker bisections " << bisections << ", p*_c in " << text(root) << " width " << width(root)
-                  << "\n";
+        std::cerr << "cubic-crossover: checker bisections " << partition.bisections << ", p*_c in " << text(partition.root)
+                  << " width " << width(partition.root) << "\n";
     auto larger = [](int sign) { return sign < 0 ? "phi_C0 > phi_C1" : "phi_C1 > phi_C0"; };
     return "g(p) = phi_C1(p) - phi_C0(p), with phi = V_sb(p) / |det B| of the C1 and C0 lattices of " + std::string(paper_citation) +
            " (Secs. III.B and III.A), has exactly one zero p*_c in (1, " + exact_text(to) + "], p*_c in " +

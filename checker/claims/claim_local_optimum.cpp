@@ -62,6 +62,54 @@ std::string basis_words(const std::array<std::array<Real, 3>, 3>& rows) {
     return words;
 }
 
+// The stated basis (claim.data.basis), row by row: each entry must hold the KKT point's.
+// Returns the stated enclosures, for the sentence.
+std::array<std::array<Real, 3>, 3> check_stated_basis(Context& context, const Json& data, const KktPoint& point) {
+    const Json& basis = context.member(data, "basis", "claim.data");
+    if (!basis.is_array() || basis.size() != 3) context.malformed("claim.data.basis", "expected three rows");
+    std::array<std::array<Real, 3>, 3> stated_basis = point.basis;
+    for (int i = 0; i < 3; ++i) {
+        const std::string row = "claim.data.basis[" + std::to_string(i) + "]";
+        if (!basis[i].is_array() || basis[i].size() != 3) context.malformed(row, "expected three intervals");
+        for (int j = 0; j < 3; ++j)
+            stated_basis[i][j] = proved_enclosure(context, basis[i][j], row + "[" + std::to_string(j) + "]", point.basis[i][j]);
+    }
+    return stated_basis;
+}
+
+// Strict complementarity: one stated multiplier per contact pair, each holding the KKT point's,
+// which is certainly positive.
+void check_multipliers(Context& context, const Json& data, const KktPoint& point, const std::vector<Triple>& contacts) {
+    const std::size_t m = contacts.size();
+    const Json& multipliers = context.member(data, "multipliers", "claim.data");
+    if (!multipliers.is_array() || multipliers.size() != m)
+        context.malformed("claim.data.multipliers", "expected one interval per contact pair");
+    for (std::size_t i = 0; i < m; ++i) {
+        const std::string path = "claim.data.multipliers[" + std::to_string(i) + "]";
+        check_encloses(context, multipliers[i], path, point.multipliers[i]);
+        context.require(positive(point.multipliers[i]), path,
+                        "the multiplier of the contact pair " + triple_text(contacts[i]) + " is not certainly positive: " +
+                            text(point.multipliers[i]));
+    }
+}
+
+// Admissibility, with exactly the contacts +-c_i B: the lattice of the KKT point is a packing
+// whose enumeration finds the contact pairs and no other contact.
+void check_admissible(Context& context, const Json& data, const Json& proof, const KktPoint& point,
+                      const std::vector<Triple>& contacts, const Real& p_interval) {
+    const std::size_t m = contacts.size();
+    if (context.string_at(data, "verdict", "claim.data") != "packing")
+        context.malformed("claim.data.verdict", "a local optimum is a packing: expected \"packing\"");
+    NamedReals symbols;
+    const std::vector<std::string> names = kkt_symbols();
+    for (std::size_t k = 0; k < 9; ++k) symbols.emplace_back(names[k], point.root[k]);
+    const FamilyVerdict verdict = check_family_verdict(context, kkt_forms(contacts), symbols, p_interval, "packing", data,
+                                                       "claim.data", context.member(proof, "lattice", "proof"), "proof.lattice");
+    context.require(verdict.contacts == 2 * static_cast<long>(m), "claim.data.contacts",
+                    "the enumeration finds " + std::to_string(verdict.contacts) + " contacts, not the 2 x " +
+                        std::to_string(m) + " vectors +-c_i B of the contact pairs");
+}
+
 std::string check_local_optimum(const Json& claim, Context& context) {
     // At p = 1/2 the norm is piecewise linear (an octahedron): no second derivatives.
     const ClaimParts parts =
@@ -76,40 +124,14 @@ std::string check_local_optimum(const Json& claim, Context& context) {
     // 1. The KKT point, and the stated basis and multipliers around it.
     const KktPoint point = replay_kkt_point(context, contacts, context.member(proof, "kkt", "proof"), "proof.kkt", p_interval);
     context.current_step = "claim.data";
-    const Json& basis = context.member(data, "basis", "claim.data");
-    if (!basis.is_array() || basis.size() != 3) context.malformed("claim.data.basis", "expected three rows");
-    std::array<std::array<Real, 3>, 3> stated_basis = point.basis;
-    for (int i = 0; i < 3; ++i) {
-        const std::string row = "claim.data.basis[" + std::to_string(i) + "]";
-        if (!basis[i].is_array() || basis[i].size() != 3) context.malformed(row, "expected three intervals");
-        for (int j = 0; j < 3; ++j)
-            stated_basis[i][j] = proved_enclosure(context, basis[i][j], row + "[" + std::to_string(j) + "]", point.basis[i][j]);
-    }
+    const std::array<std::array<Real, 3>, 3> stated_basis = check_stated_basis(context, data, point);
     // 2. Strict complementarity.
-    const Json& multipliers = context.member(data, "multipliers", "claim.data");
-    if (!multipliers.is_array() || multipliers.size() != m)
-        context.malformed("claim.data.multipliers", "expected one interval per contact pair");
-    for (std::size_t i = 0; i < m; ++i) {
-        const std::string path = "claim.data.multipliers[" + std::to_string(i) + "]";
-        check_encloses(context, multipliers[i], path, point.multipliers[i]);
-        context.require(positive(point.multipliers[i]), path,
-                        "the multiplier of the contact pair " + triple_text(contacts[i]) + " is not certainly positive: " +
-                            text(point.multipliers[i]));
-    }
+    check_multipliers(context, data, point, contacts);
     // 3. Second order.
     const KktEquations equations{contacts, p_interval};
     check_second_order(context, proof, equations, point.root);
     // 4. Admissibility, with exactly the contacts +-c_i B.
-    if (context.string_at(data, "verdict", "claim.data") != "packing")
-        context.malformed("claim.data.verdict", "a local optimum is a packing: expected \"packing\"");
-    NamedReals symbols;
-    const std::vector<std::string> names = kkt_symbols();
-    for (std::size_t k = 0; k < 9; ++k) symbols.emplace_back(names[k], point.root[k]);
-    const FamilyVerdict verdict = check_family_verdict(context, kkt_forms(contacts), symbols, p_interval, "packing", data,
-                                                       "claim.data", context.member(proof, "lattice", "proof"), "proof.lattice");
-    context.require(verdict.contacts == 2 * static_cast<long>(m), "claim.data.contacts",
-                    "the enumeration finds " + std::to_string(verdict.contacts) + " contacts, not the 2 x " +
-                        std::to_string(m) + " vectors +-c_i B of the contact pairs");
+    check_admissible(context, data, proof, point, contacts, p_interval);
     // 5. phi. det B > 0 at the point (step 2), so |det B| = det B there.
     context.current_step = "claim.data";
     const Real volume = superball_volume(p_interval);

@@ -74,6 +74,72 @@ bool prove_sign(const Real& q, int sign, int depth) {
     return prove_sign(hull(lower_point(q), center), sign, depth + 1) && prove_sign(hull(center, upper_point(q)), sign, depth + 1);
 }
 
+// Eq. (6) itself, f(p) = 2 c(p) - 1 with f'(p) = 2 c'(p), from the Newton case: exactly one root
+// in the box, the box inside (1/2, 1], the root meeting ln3/ln4, and no other root on (1/2, 1]
+// (f < 0 left of the box, > 0 right of it).
+void replay_equation_six(Context& context, const Json& newton, const mpq_class& from, const Real& closed_form) {
+    const mpfr_prec_t precision = context.precision();
+    const std::string newton_path = "proof.cases[0]";
+    if (context.string_at(newton, "kind", newton_path) != "newton") context.malformed(newton_path + ".kind", "expected newton");
+    auto read = [&](const char* key) {
+        return context.interval(context.member(newton, key, newton_path), newton_path + "." + key);
+    };
+    const Real box = read("box"), center = read("midpoint"), derivative = read("derivative"), image = read("image"),
+               stored_root = read("root");
+    const Real one = integer(1, precision);
+    context.require(less(rational(from, precision), box) && mpfr_cmp(box.hi(), one.lo()) <= 0, newton_path + ".box",
+                    "the Newton box is not inside (1/2, 1]");
+    const Real root = replay_newton(
+        context, [&](const Real& p) { return 2 * o0_height(p) - one; },
+        [&](const Real& p) { return 2 * octahedral_height_with_slope(p).slope; }, box, center, &derivative, &image, newton_path);
+    context.require(subset(root, stored_root), newton_path + ".root",
+                    "the stored root " + text(stored_root) + " does not hold the checker's " + text(root));
+    Real meet(precision);
+    context.require(intersect(meet, root, closed_form), newton_path + ".root", "the root of Eq. (6) misses ln3/ln4");
+    const Real half_point = rational(from, precision);
+    context.require(prove_sign(hull(half_point, lower_point(box)), -1, 0), newton_path + ".box",
+                    "Eq. (6) is not proved negative on [1/2, lower end of the box]");
+    context.require(prove_sign(hull(upper_point(box), one), 1, 0), newton_path + ".box",
+                    "Eq. (6) is not proved positive on [upper end of the box, 1]");
+}
+
+// The determinants the lattice identity proves: det U of B_O0 = U B_O1, and |det B_O0|.
+struct LatticeIdentity {
+    mpq_class unimodular_determinant, o0_determinant;
+};
+
+// At p*_o: c = l = 1/2 (3 = 4^p), q = 0, s = 1, so the stated O0 basis and the O1 basis at
+// q = 0 are those of the checker, and the stated integer U with det U = +-1 maps one onto the
+// other.
+LatticeIdentity check_lattice_identity(Context& context, const Json& data, const Json& identity, const Real& closed_form) {
+    const mpfr_prec_t precision = context.precision();
+    const std::string lattice_path = "proof.cases[1]";
+    if (context.string_at(identity, "kind", lattice_path) != "lattice-identity")
+        context.malformed(lattice_path + ".kind", "expected lattice-identity");
+    context.current_step = lattice_path;
+    const Real half = rational(mpq_class(1, 2), precision);
+    context.require(subset(half, o0_height(closed_form)), lattice_path, "c(ln3/ln4) does not contain 1/2");
+    context.require(subset(half, OctahedralEquations{closed_form}.l()), lattice_path, "l(ln3/ln4) does not contain 1/2");
+    const Json& lattice = context.member(data, "lattice", "claim.data");
+    const RationalMatrix o0 = read_matrix(context, context.member(lattice, "O0", "claim.data.lattice"), "claim.data.lattice.O0");
+    const RationalMatrix o1 = read_matrix(context, context.member(lattice, "O1", "claim.data.lattice"), "claim.data.lattice.O1");
+    const RationalMatrix unimodular =
+        read_matrix(context, context.member(lattice, "unimodular", "claim.data.lattice"), "claim.data.lattice.unimodular");
+    check_same(context, o0, o0_basis(half), "claim.data.lattice.O0");
+    const Real zero(precision);
+    check_same(context, o1, o1_basis(zero, integer(1, precision), half), "claim.data.lattice.O1");
+    for (const auto& row : unimodular)
+        for (const mpq_class& entry : row)
+            context.require(entry.get_den() == 1, "claim.data.lattice.unimodular", "not an integer matrix");
+    const mpq_class det_u = rational_determinant(unimodular);
+    context.require(det_u == 1 || det_u == -1, "claim.data.lattice.unimodular", "det U is not +-1");
+    context.require(product(unimodular, o1) == o0, "claim.data.lattice.unimodular", "B_O0 != U B_O1");
+    const mpq_class det = abs(rational_determinant(o0));
+    context.require(context.rational_at(lattice, "abs_determinant", "claim.data.lattice") == det,
+                    "claim.data.lattice.abs_determinant", "|det B_O0| is " + det.get_str());
+    return {det_u, det};
+}
+
 std::string check_octahedral_crossover(const Json& claim, Context& context) {
     const Json& document = context.document();
     const Json& data = context.member(claim, "data", "claim");
@@ -93,58 +159,10 @@ std::string check_octahedral_crossover(const Json& claim, Context& context) {
     const Json& cases = context.member(proof, "cases", "proof");
     if (!cases.is_array()) context.malformed("proof.cases", "expected an array");
     context.require(cases.size() == 2, "proof.cases", "expected two cases: Newton on Eq. (6) and the lattice identity");
-    // Eq. (6) itself: f(p) = 2 c(p) - 1, f'(p) = 2 c'(p).
-    const std::string newton_path = "proof.cases[0]";
-    const Json& newton = cases[0];
-    if (context.string_at(newton, "kind", newton_path) != "newton") context.malformed(newton_path + ".kind", "expected newton");
-    auto read = [&](const char* key) {
-        return context.interval(context.member(newton, key, newton_path), newton_path + "." + key);
-    };
-    const Real box = read("box"), center = read("midpoint"), derivative = read("derivative"), image = read("image"),
-               stored_root = read("root");
-    const Real one = integer(1, precision);
-    context.require(less(rational(from, precision), box) && mpfr_cmp(box.hi(), one.lo()) <= 0, newton_path + ".box",
-                    "the Newton box is not inside (1/2, 1]");
-    const Real root = replay_newton(
-        context, [&](const Real& p) { return 2 * o0_height(p) - one; },
-        [&](const Real& p) { return 2 * octahedral_height_with_slope(p).slope; }, box, center, &derivative, &image, newton_path);
-    context.require(subset(root, stored_root), newton_path + ".root",
-                    "the stored root " + text(stored_root) + " does not hold the checker's " + text(root));
-    Real meet(precision);
-    context.require(intersect(meet, root, closed_form), newton_path + ".root", "the root of Eq. (6) misses ln3/ln4");
-    // No other root on (1/2, 1]: Eq. (6) < 0 on [1/2, lower end of the box], > 0 on [upper end, 1].
-    const Real half_point = rational(from, precision);
-    context.require(prove_sign(hull(half_point, lower_point(box)), -1, 0), newton_path + ".box",
-                    "Eq. (6) is not proved negative on [1/2, lower end of the box]");
-    context.require(prove_sign(hull(upper_point(box), one), 1, 0), newton_path + ".box",
-                    "Eq. (6) is not proved positive on [upper end of the box, 1]");
-
-    // At p*_o: c = l = 1/2 (3 = 4^p), q = 0, s = 1.
-    const std::string lattice_path = "proof.cases[1]";
-    const Json& identity = cases[1];
-    if (context.string_at(identity, "kind", lattice_path) != "lattice-identity")
-        context.malformed(lattice_path + ".kind", "expected lattice-identity");
-    context.current_step = lattice_path;
-    const Real half = rational(mpq_class(1, 2), precision);
-    context.require(subset(half, o0_height(closed_form)), lattice_path, "c(ln3/ln4) does not contain 1/2");
-    context.require(subset(half, OctahedralEquations{closed_form}.l()), lattice_path, "l(ln3/ln4) does not contain 1/2");
-    const Json& lattice = context.member(data, "lattice", "claim.data");
-    const RationalMatrix o0 = read_matrix(context, context.member(lattice, "O0", "claim.data.lattice"), "claim.data.lattice.O0");
-    const RationalMatrix o1 = read_matrix(context, context.member(lattice, "O1", "claim.data.lattice"), "claim.data.lattice.O1");
-    const RationalMatrix unimodular =
-        read_matrix(context, context.member(lattice, "unimodular", "claim.data.lattice"), "claim.data.lattice.unimodular");
-    check_same(context, o0, o0_basis(half), "claim.data.lattice.O0");
-    const Real zero(precision);
-    check_same(context, o1, o1_basis(zero, one, half), "claim.data.lattice.O1");
-    for (const auto& row : unimodular)
-        for (const mpq_class& entry : row)
-            context.require(entry.get_den() == 1, "claim.data.lattice.unimodular", "not an integer matrix");
-    const mpq_class det_u = rational_determinant(unimodular);
-    context.require(det_u == 1 || det_u == -1, "claim.data.lattice.unimodular", "det U is not +-1");
-    context.require(product(unimodular, o1) == o0, "claim.data.lattice.unimodular", "B_O0 != U B_O1");
-    const mpq_class det = abs(rational_determinant(o0));
-    context.require(context.rational_at(lattice, "abs_determinant", "claim.data.lattice") == det,
-                    "claim.data.lattice.abs_determinant", "|det B_O0| is " + det.get_str());
+    replay_equation_six(context, cases[0], from, closed_form);
+    const LatticeIdentity identity = check_lattice_identity(context, data, cases[1], closed_form);
+    const mpq_class& det_u = identity.unimodular_determinant;
+    const mpq_class& det = identity.o0_determinant;
     context.current_step = "claim.data.phi";
     const Real stated_phi = proved_enclosure(context, context.member(data, "phi", "claim.data"), "claim.data.phi",
                                              superball_volume(closed_form) / rational(det, precision));

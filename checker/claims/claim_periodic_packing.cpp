@@ -204,12 +204,18 @@ Vector difference(const std::vector<Particle>& particles, const Matrix& cell, lo
     return d;
 }
 
-// Every canonical pair with |d|^2 < (2r)^2, exactly (in integers: everything times the common
-// denominator L of the cell and the centres), each required in `listed`. Returns how many.
-long require_close_pairs(Context& context, const std::vector<Particle>& particles, const Matrix& cell, const mpq_class& det,
-                         const mpq_class& radius, const std::map<PairKey, std::size_t>& listed) {
+// The boxes of lattice shifts k to enumerate, one per canonical pair of particles (i <= j), and
+// how many shifts they hold in all, at most max_periodic_shifts.
+struct ShiftBoxes {
+    std::vector<std::array<long, 3>> bounds;  // |k_m| <= bounds[pair][m]
+    mpz_class total;
+};
+
+// The box of each pair: |k_m| <= (2r + |c_j - c_i|) |B[m+1] x B[m+2]| / |det B|, which holds
+// every k with |d| < 2r. A cell too thin for its radius (too many shifts) is refused.
+ShiftBoxes shift_boxes(Context& context, const std::vector<Particle>& particles, const Matrix& cell, const mpq_class& det,
+                       const mpq_class& radius) {
     const long n = static_cast<long>(particles.size());
-    // The box of each pair: |k_m| <= (2r + |c_j - c_i|) |B[m+1] x B[m+2]| / |det B|.
     std::array<mpq_class, 3> column_norm;
     for (int m = 0; m < 3; ++m) {
         const Vector normal = cross(cell[(m + 1) % 3], cell[(m + 2) % 3]);
@@ -220,8 +226,7 @@ long require_close_pairs(Context& context, const std::vector<Particle>& particle
                                                  std::to_string(max_periodic_shifts) +
                                                  " shifts in all (max_periodic_shifts): the cell is too thin for its radius");
     };
-    std::vector<std::array<long, 3>> bounds;
-    mpz_class total = 0;
+    ShiftBoxes boxes_of_pairs{{}, 0};
     for (long i = 0; i < n; ++i)
         for (long j = i; j < n; ++j) {
             const Vector base = difference(particles, cell, i, j, {0, 0, 0});
@@ -236,13 +241,25 @@ long require_close_pairs(Context& context, const std::vector<Particle>& particle
                 boxes *= 2 * floor + 1;
                 bound[m] = floor.get_si();
             }
-            total += boxes;
-            if (total > max_periodic_shifts) too_thin();
-            bounds.push_back(bound);
+            boxes_of_pairs.total += boxes;
+            if (boxes_of_pairs.total > max_periodic_shifts) too_thin();
+            boxes_of_pairs.bounds.push_back(bound);
         }
+    return boxes_of_pairs;
+}
 
-    // Integers: L c_i, L B[m], and |L d|^2 den(r)^2 < 4 num(r)^2 L^2.
-    mpz_class common = 1;
+// The configuration in integers, so that the enumeration compares exactly and fast: L c_i and
+// L B[m], with L the common denominator of the cell and the centres.
+struct ScaledConfiguration {
+    mpz_class common;
+    std::array<std::array<mpz_class, 3>, 3> rows;
+    std::vector<std::array<mpz_class, 3>> centers;
+};
+
+// Scales the cell and the centres by L, which clears every denominator.
+ScaledConfiguration scaled_configuration(const std::vector<Particle>& particles, const Matrix& cell) {
+    ScaledConfiguration scaled_in{1, {}, {}};
+    mpz_class& common = scaled_in.common;
     for (const Vector& row : cell)
         for (const mpq_class& x : row) mpz_lcm(common.get_mpz_t(), common.get_mpz_t(), x.get_den_mpz_t());
     for (const Particle& particle : particles)
@@ -252,10 +269,22 @@ long require_close_pairs(Context& context, const std::vector<Particle>& particle
         for (int c = 0; c < 3; ++c) result[c] = mpq_class(v[c] * common).get_num();  // exact: L clears the denominator
         return result;
     };
-    std::array<std::array<mpz_class, 3>, 3> rows;
-    for (int m = 0; m < 3; ++m) rows[m] = scaled(cell[m]);
-    std::vector<std::array<mpz_class, 3>> centers;
-    for (const Particle& particle : particles) centers.push_back(scaled(particle.center));
+    for (int m = 0; m < 3; ++m) scaled_in.rows[m] = scaled(cell[m]);
+    for (const Particle& particle : particles) scaled_in.centers.push_back(scaled(particle.center));
+    return scaled_in;
+}
+
+// Every canonical pair with |d|^2 < (2r)^2, exactly (in integers: everything times the common
+// denominator L of the cell and the centres), each required in `listed`. Returns how many.
+long require_close_pairs(Context& context, const std::vector<Particle>& particles, const Matrix& cell, const mpq_class& det,
+                         const mpq_class& radius, const std::map<PairKey, std::size_t>& listed) {
+    const long n = static_cast<long>(particles.size());
+    const ShiftBoxes boxes = shift_boxes(context, particles, cell, det, radius);
+    const ScaledConfiguration scaled = scaled_configuration(particles, cell);
+    const mpz_class& common = scaled.common;
+    const auto& rows = scaled.rows;
+    const auto& centers = scaled.centers;
+    // |L d|^2 den(r)^2 < 4 num(r)^2 L^2.
     const mpz_class limit = 4 * radius.get_num() * radius.get_num() * common * common;
     const mpz_class factor = radius.get_den() * radius.get_den();
 
@@ -270,7 +299,7 @@ long require_close_pairs(Context& context, const std::vector<Particle>& particle
     mpz_class norm, term;
     for (long i = 0; i < n; ++i)
         for (long j = i; j < n; ++j, ++pair) {
-            const std::array<long, 3>& bound = bounds[pair];
+            const std::array<long, 3>& bound = boxes.bounds[pair];
             for (long a = -bound[0]; a <= bound[0]; ++a) {
                 for (int c = 0; c < 3; ++c) da[c] = centers[j][c] - centers[i][c] + a * rows[0][c];
                 for (long b = -bound[1]; b <= bound[1]; ++b) {
@@ -299,25 +328,13 @@ long require_close_pairs(Context& context, const std::vector<Particle>& particle
                 }
             }
         }
-    context.count_steps(mpz_class(total).get_si());
+    context.count_steps(mpz_class(boxes.total).get_si());
     return found;
 }
 
-std::string check_periodic_packing(const Json& claim, Context& context) {
-    const Json& document = context.document();
-    const Json& data = context.member(claim, "data", "claim");
-    const Json& inputs = context.member(document, "inputs", "");
-    const Json& proof = context.member(document, "proof", "");
-    const mpfr_prec_t precision = context.precision();
-    context.current_step = "claim.data";
-
-    // 1. The configuration.
-    const mpq_class p = context.rational_at(data, "p", "claim.data");
-    context.require(context.rational_at(inputs, "p", "inputs") == p, "inputs.p", "the input p differs from the claim's");
-    context.require(p >= mpq_class(1, 2), "claim.data.p", "the separating-plane test needs p >= 1/2 (a convex superball)");
-    const Matrix cell = read_basis(context, context.member(data, "cell", "claim.data"), "claim.data.cell");
-    const mpq_class det = dot(cell[0], cross(cell[1], cell[2]));
-    context.require(det != 0, "claim.data.cell", "the cell is singular (det B = 0): its rows span no lattice");
+// The particles of claim.data: each a centre and a nonzero quaternion (its rotation with it);
+// from 1 to max_periodic_particles of them.
+std::vector<Particle> read_particles(Context& context, const Json& data) {
     const Json& list = context.member(data, "particles", "claim.data");
     if (!list.is_array() || list.empty() || list.size() > max_periodic_particles)
         context.malformed("claim.data.particles", "expected from 1 to " + std::to_string(max_periodic_particles) +
@@ -333,19 +350,26 @@ std::string check_periodic_packing(const Json& claim, Context& context) {
         particle.rotation = rotation_of(q);
         particles.push_back(particle);
     }
+    return particles;
+}
+
+// The claim is a packing, of as many particles as the inputs name.
+void check_packing_and_count(Context& context, const Json& data, const Json& inputs, std::size_t n) {
     const Json& packing = context.member(data, "packing", "claim.data");
     if (!packing.is_boolean()) context.malformed("claim.data.packing", "expected true or false");
     context.require(packing.get<bool>(), "claim.data.packing", "this kind certifies packings only");
-    const std::size_t n = particles.size();
     const Json& count = context.member(inputs, "particles", "inputs");
     if (!count.is_number_integer()) context.malformed("inputs.particles", "expected an integer");
     const bool same_count = count.is_number_unsigned() ? count.get<std::uint64_t>() == n
                                                        : count.get<std::int64_t>() == static_cast<std::int64_t>(n);
     context.require(same_count, "inputs.particles", "the input count " + count.dump() + " differs from the claim's " +
                                                         std::to_string(n) + " particles");
+}
 
-    // 2. The radius.
-    if (context.string_at(proof, "kind", "proof") != "separating-planes") context.malformed("proof.kind", "expected \"separating-planes\"");
+// The radius r of proof.radius: at least the circumradius of K (1 for p <= 1, 3^((1 - 1/p)/2)
+// above), so that two bodies whose centres are 2r apart or more cannot meet.
+mpq_class read_radius(Context& context, const Json& proof, const mpq_class& p) {
+    const mpfr_prec_t precision = context.precision();
     context.current_step = "proof.radius";
     const mpq_class radius = context.rational_at(proof, "radius", "proof");
     context.require(radius >= 1, "proof.radius", "r = " + exact_text(radius) + " < 1, below the circumradius of K");
@@ -356,13 +380,21 @@ std::string check_periodic_packing(const Json& claim, Context& context) {
                         "r^2 = " + exact_text(r2) + " is not certainly >= 3^(1 - 1/p) in " + text(squared) +
                             ", the squared circumradius of K");
     }
+    return radius;
+}
 
-    // The listed pairs, canonical and once each.
+// The pairs of proof.pairs, in order: each with its separating plane's normal.
+struct ListedPairs {
+    std::map<PairKey, std::size_t> listed;  // pair -> its index
+    std::vector<PairKey> keys;
+    std::vector<Vector> normals;
+};
+
+// The listed pairs, canonical and once each, of particles 0..n-1.
+ListedPairs read_pairs(Context& context, const Json& proof, std::size_t n) {
     const Json& pairs = context.member(proof, "pairs", "proof");
     if (!pairs.is_array()) context.malformed("proof.pairs", "expected an array");
-    std::map<PairKey, std::size_t> listed;
-    std::vector<Vector> normals;
-    std::vector<PairKey> keys;
+    ListedPairs read;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const std::string path = "proof.pairs[" + std::to_string(k) + "]";
         const Json& entry = pairs[k];
@@ -375,21 +407,22 @@ std::string check_periodic_packing(const Json& claim, Context& context) {
         if (first == second && !canonical(shift))
             context.malformed(path + ".shift", "not canonical: with first = second the shift must be lexicographically positive");
         const PairKey key{first, second, shift};
-        if (!listed.emplace(key, k).second) context.malformed(path, "the pair " + pair_words(key) + " is listed twice");
-        keys.push_back(key);
-        normals.push_back(normal);
+        if (!read.listed.emplace(key, k).second) context.malformed(path, "the pair " + pair_words(key) + " is listed twice");
+        read.keys.push_back(key);
+        read.normals.push_back(normal);
     }
+    return read;
+}
 
-    // 3. Completeness: the checker's own close pairs.
-    context.current_step = "proof.pairs";
-    const long close = require_close_pairs(context, particles, cell, det, radius, listed);
-
-    // 4. Every listed pair separated by its plane.
-    for (std::size_t k = 0; k < keys.size(); ++k) {
+// Every listed pair separated by its plane: h(R_i^T n) + h(R_j^T n) <= <n, d>, certainly.
+void require_planes_separate(Context& context, const ListedPairs& pairs, const std::vector<Particle>& particles,
+                             const Matrix& cell, const mpq_class& p) {
+    const mpfr_prec_t precision = context.precision();
+    for (std::size_t k = 0; k < pairs.keys.size(); ++k) {
         const std::string path = "proof.pairs[" + std::to_string(k) + "]";
         context.current_step = path;
-        const auto& [i, j, shift] = keys[k];
-        const Vector& normal = normals[k];
+        const auto& [i, j, shift] = pairs.keys[k];
+        const Vector& normal = pairs.normals[k];
         context.require(normal[0] != 0 || normal[1] != 0 || normal[2] != 0, path + ".normal", "the zero vector is no normal");
         const Vector d = difference(particles, cell, i, j, shift);
         const mpq_class along = dot(normal, d);
@@ -397,10 +430,41 @@ std::string check_periodic_packing(const Json& claim, Context& context) {
         const Support b = support(transposed_times(particles[j].rotation, normal), p, precision);
         std::string shown;
         context.require(separated(a, b, along, precision, shown), path + ".normal",
-                        "the plane does not certainly separate the pair " + pair_words(keys[k]) +
+                        "the plane does not certainly separate the pair " + pair_words(pairs.keys[k]) +
                             ": h(R_i^T n) + h(R_j^T n) = " + shown + " exceeds <n, d> = " + exact_text(along) + " (d = " +
                             vector_words(d) + ")");
     }
+}
+
+std::string check_periodic_packing(const Json& claim, Context& context) {
+    const Json& document = context.document();
+    const Json& data = context.member(claim, "data", "claim");
+    const Json& inputs = context.member(document, "inputs", "");
+    const Json& proof = context.member(document, "proof", "");
+    context.current_step = "claim.data";
+
+    // 1. The configuration.
+    const mpq_class p = context.rational_at(data, "p", "claim.data");
+    context.require(context.rational_at(inputs, "p", "inputs") == p, "inputs.p", "the input p differs from the claim's");
+    context.require(p >= mpq_class(1, 2), "claim.data.p", "the separating-plane test needs p >= 1/2 (a convex superball)");
+    const Matrix cell = read_basis(context, context.member(data, "cell", "claim.data"), "claim.data.cell");
+    const mpq_class det = dot(cell[0], cross(cell[1], cell[2]));
+    context.require(det != 0, "claim.data.cell", "the cell is singular (det B = 0): its rows span no lattice");
+    const std::vector<Particle> particles = read_particles(context, data);
+    const std::size_t n = particles.size();
+    check_packing_and_count(context, data, inputs, n);
+
+    // 2. The radius, and the listed pairs.
+    if (context.string_at(proof, "kind", "proof") != "separating-planes") context.malformed("proof.kind", "expected \"separating-planes\"");
+    const mpq_class radius = read_radius(context, proof, p);
+    const ListedPairs pairs = read_pairs(context, proof, n);
+
+    // 3. Completeness: the checker's own close pairs.
+    context.current_step = "proof.pairs";
+    const long close = require_close_pairs(context, particles, cell, det, radius, pairs.listed);
+
+    // 4. Every listed pair separated by its plane.
+    require_planes_separate(context, pairs, particles, cell, p);
     check_p_decimal(context, inputs, p);  // after the proof, which names a wrong p first
 
     // 5. The sentence.

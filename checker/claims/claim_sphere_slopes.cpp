@@ -92,26 +92,22 @@ std::string paper_words(const PrintedValue& value, const Real& closed, const std
     return words;
 }
 
-std::string check_sphere_slopes(const Json& claim, Context& context) {
-    const Json& document = context.document();
-    const Json& data = context.member(claim, "data", "claim");
-    const Json& inputs = context.member(document, "inputs", "");
-    context.require(context.rational_at(inputs, "p", "inputs") == 1, "inputs.p", "the slopes are claimed at p = 1");
-    context.require(context.rational_at(data, "p", "claim.data") == 1, "claim.data.p", "the slopes are claimed at p = 1");
-    const mpfr_prec_t precision = context.precision();
-    context.current_step = "claim.data";
-    const std::string identity = determinant_identity_failure(precision);
-    context.require(identity.empty(), "claim.data", "closed-form determinant disagrees with the basis: " + identity);
-    const Real p = integer(1, precision);
+// The three families' densities with their slopes at p = 1, from the proof's cases (the
+// smallest roots of C0 and C1 replayed, O0 evaluated), each checked against claim.data.
+struct SphereSlopes {
+    std::vector<ValueAndSlope> cubic;  // C0, C1
+    ValueAndSlope o0;
+    std::vector<Real> stated;  // the stated slopes of C0, C1 and O0
+};
+
+// The cases of proof.cases replayed at p = 1, each family's stated values checked as it comes.
+SphereSlopes replay_slopes(Context& context, const Json& data, const Json& proof, const Real& p) {
     const ValueAndSlope t = halving_shift(p);
     const ValueAndSlope volume = superball_volume_with_slope(p);
-
-    const Json& proof = context.member(document, "proof", "");
-    if (context.string_at(proof, "kind", "proof") != "all") context.malformed("proof.kind", "expected \"all\"");
     const Json& cases = context.member(proof, "cases", "proof");
     if (!cases.is_array()) context.malformed("proof.cases", "expected an array");
     context.require(cases.size() == 3, "proof.cases", "expected three cases: the roots of C0 and C1, and O0");
-    ValueAndSlope slopes[2] = {{p, p}, {p, p}};
+    std::vector<ValueAndSlope> slopes;
     std::vector<Real> stated_slopes;
     for (int k = 0; k < 2; ++k) {
         const std::string family = k == 0 ? "C0" : "C1", path = "proof.cases[" + std::to_string(k) + "]";
@@ -123,7 +119,7 @@ std::string check_sphere_slopes(const Json& claim, Context& context) {
         const ValueAndSlope root = cubic_root_with_slope(equation, s);
         const ValueAndSlope phi = density_with_slope(volume, cubic_abs_determinant(k == 1, root, t));
         stated_slopes.push_back(check_family(context, data, family, "s", root, phi));
-        slopes[k] = phi;
+        slopes.push_back(phi);
     }
     if (context.string_at(cases[2], "kind", "proof.cases[2]") != "evaluation") context.malformed("proof.cases[2].kind", "expected evaluation");
     context.require(context.string_at(cases[2], "family", "proof.cases[2]") == "O0", "proof.cases[2].family", "expected O0");
@@ -131,22 +127,14 @@ std::string check_sphere_slopes(const Json& claim, Context& context) {
     const ValueAndSlope c = octahedral_height_with_slope(p);
     const ValueAndSlope o0 = density_with_slope(volume, octahedral_abs_determinant(c));
     stated_slopes.push_back(check_family(context, data, "O0", "c", c, o0));
+    return {slopes, o0, stated_slopes};
+}
 
-    // a_minus is O0's slope; a_plus the larger cubic slope (decided, not assumed).
-    const Json& minus = context.member(data, "a_minus", "claim.data");
-    context.require(context.string_at(minus, "family", "claim.data.a_minus") == "O0", "claim.data.a_minus.family",
-                    "a_minus is the slope of O0");
-    const Real stated_minus =
-        proved_enclosure(context, context.member(minus, "value", "claim.data.a_minus"), "claim.data.a_minus.value", o0.slope);
-    const Json& plus = context.member(data, "a_plus", "claim.data");
-    const std::string plus_family = context.string_at(plus, "family", "claim.data.a_plus");
-    const int larger = plus_family == "C0" ? 0 : plus_family == "C1" ? 1 : -1;
-    context.require(larger >= 0 && less(slopes[1 - larger].slope, slopes[larger].slope), "claim.data.a_plus.family",
-                    "the family named is not proved to have the larger cubic slope");
-    const Real stated_plus = proved_enclosure(context, context.member(plus, "value", "claim.data.a_plus"),
-                                              "claim.data.a_plus.value", slopes[larger].slope);
-
-    // The paper's closed forms (literature.hpp) and printed values (the table's, not the file's).
+// The paper's closed forms (literature.hpp) and printed values (the table's, not the file's)
+// compared with the certified a_minus and a_plus, every stated verdict checked. Returns the
+// sentence's words on them.
+std::string check_paper_slopes(Context& context, const Json& data, const Real& minus_slope, const Real& plus_slope) {
+    const mpfr_prec_t precision = context.precision();
     context.current_step = "claim.data.paper";
     const PrintedValue& paper_minus_value = printed_value(Printed::a_minus);
     const PrintedValue& paper_plus_value = printed_value(Printed::a_plus);
@@ -160,28 +148,60 @@ std::string check_sphere_slopes(const Json& claim, Context& context) {
     const Real stated_closed_plus = proved_enclosure(context, context.member(paper_plus, "closed_form", "claim.data.paper.a_plus"),
                                                      "claim.data.paper.a_plus.closed_form", closed_plus);
     const std::string minus_vs_closed =
-        check_overlap_verdict(context, paper_minus, "certified_vs_closed_form", o0.slope, closed_minus, "claim.data.paper.a_minus");
-    const std::string plus_vs_closed = check_overlap_verdict(context, paper_plus, "certified_vs_closed_form", slopes[larger].slope,
+        check_overlap_verdict(context, paper_minus, "certified_vs_closed_form", minus_slope, closed_minus, "claim.data.paper.a_minus");
+    const std::string plus_vs_closed = check_overlap_verdict(context, paper_plus, "certified_vs_closed_form", plus_slope,
                                                              closed_plus, "claim.data.paper.a_plus");
     const std::string minus_digits = printed_at(context, paper_minus, paper_minus_value, "claim.data.paper.a_minus");
     const std::string plus_digits = printed_at(context, paper_plus, paper_plus_value, "claim.data.paper.a_plus");
     const auto minus_printed = check_printed(context, minus_digits, context.member(paper_minus, "certified_vs_printed", "claim.data.paper.a_minus"),
-                                             o0.slope, "claim.data.paper.a_minus.certified_vs_printed");
+                                             minus_slope, "claim.data.paper.a_minus.certified_vs_printed");
     const auto plus_printed = check_printed(context, plus_digits, context.member(paper_plus, "certified_vs_printed", "claim.data.paper.a_plus"),
-                                            slopes[larger].slope, "claim.data.paper.a_plus.certified_vs_printed");
+                                            plus_slope, "claim.data.paper.a_plus.certified_vs_printed");
     const auto closed_plus_printed =
         check_printed(context, plus_digits, context.member(paper_plus, "closed_form_vs_printed", "claim.data.paper.a_plus"),
                       closed_plus, "claim.data.paper.a_plus.closed_form_vs_printed");
+    return paper_words(paper_minus_value, stated_closed_minus, minus_vs_closed, minus_printed, nullptr) + " " +
+           paper_words(paper_plus_value, stated_closed_plus, plus_vs_closed, plus_printed, &closed_plus_printed);
+}
+
+std::string check_sphere_slopes(const Json& claim, Context& context) {
+    const Json& document = context.document();
+    const Json& data = context.member(claim, "data", "claim");
+    const Json& inputs = context.member(document, "inputs", "");
+    context.require(context.rational_at(inputs, "p", "inputs") == 1, "inputs.p", "the slopes are claimed at p = 1");
+    context.require(context.rational_at(data, "p", "claim.data") == 1, "claim.data.p", "the slopes are claimed at p = 1");
+    const mpfr_prec_t precision = context.precision();
+    context.current_step = "claim.data";
+    const std::string identity = determinant_identity_failure(precision);
+    context.require(identity.empty(), "claim.data", "closed-form determinant disagrees with the basis: " + identity);
+    const Real p = integer(1, precision);
+
+    const Json& proof = context.member(document, "proof", "");
+    if (context.string_at(proof, "kind", "proof") != "all") context.malformed("proof.kind", "expected \"all\"");
+    const SphereSlopes slopes = replay_slopes(context, data, proof, p);
+
+    // a_minus is O0's slope; a_plus the larger cubic slope (decided, not assumed).
+    const Json& minus = context.member(data, "a_minus", "claim.data");
+    context.require(context.string_at(minus, "family", "claim.data.a_minus") == "O0", "claim.data.a_minus.family",
+                    "a_minus is the slope of O0");
+    const Real stated_minus =
+        proved_enclosure(context, context.member(minus, "value", "claim.data.a_minus"), "claim.data.a_minus.value", slopes.o0.slope);
+    const Json& plus = context.member(data, "a_plus", "claim.data");
+    const std::string plus_family = context.string_at(plus, "family", "claim.data.a_plus");
+    const int larger = plus_family == "C0" ? 0 : plus_family == "C1" ? 1 : -1;
+    context.require(larger >= 0 && less(slopes.cubic[1 - larger].slope, slopes.cubic[larger].slope), "claim.data.a_plus.family",
+                    "the family named is not proved to have the larger cubic slope");
+    const Real stated_plus = proved_enclosure(context, context.member(plus, "value", "claim.data.a_plus"),
+                                              "claim.data.a_plus.value", slopes.cubic[larger].slope);
+    const std::string paper = check_paper_slopes(context, data, slopes.o0.slope, slopes.cubic[larger].slope);
 
     // The sentence: the stated enclosures and verdicts, each checked above.
     return "At the sphere point p = 1 the slopes of phi = V_sb(p) / |det B| of the lattices of " + std::string(paper_citation) +
-           " are: phi_C0'(1) in " + enclosure_words(stated_slopes[0]) + ", phi_C1'(1) in " + enclosure_words(stated_slopes[1]) +
-           " (right of p = 1), phi_O0'(1) in " + enclosure_words(stated_slopes[2]) + " (left of p = 1); a_minus = phi_O0'(1) in " +
+           " are: phi_C0'(1) in " + enclosure_words(slopes.stated[0]) + ", phi_C1'(1) in " + enclosure_words(slopes.stated[1]) +
+           " (right of p = 1), phi_O0'(1) in " + enclosure_words(slopes.stated[2]) + " (left of p = 1); a_minus = phi_O0'(1) in " +
            enclosure_words(stated_minus) + " and a_plus = phi_" + plus_family + "'(1) in " + enclosure_words(stated_plus) +
            ", the larger cubic slope (both cubic lattices are the FCC lattice at p = 1, so the one with the larger phi just "
-           "right of p = 1 is the one with the larger slope). " +
-           paper_words(paper_minus_value, stated_closed_minus, minus_vs_closed, minus_printed, nullptr) + " " +
-           paper_words(paper_plus_value, stated_closed_plus, plus_vs_closed, plus_printed, &closed_plus_printed);
+           "right of p = 1 is the one with the larger slope). " + paper;
 }
 
 const ClaimKindRegistration registration("sphere-slopes", check_sphere_slopes);

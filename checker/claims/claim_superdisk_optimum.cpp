@@ -106,23 +106,11 @@ const char* const premise =
     "u(t) = (x, t x), x = (1 + t^q)^(-1/q), q = 2p, the symmetries of the square reduce every u to some t in [0, 1], "
     "and the lattice of u(t) has basis 2u, 2v and determinant 4 D(t).";
 
-std::string check_superdisk_optimum(const Json& claim, Context& context) {
-    const Json& document = context.document();
-    const Json& data = context.member(claim, "data", "claim");
-    const Json& inputs = context.member(document, "inputs", "");
-    const mpq_class p = context.rational_at(data, "p", "claim.data");
-    context.require(context.rational_at(inputs, "p", "inputs") == p, "inputs.p", "the input p differs from the claim's");
-    // p = 1/2 (the square tiles) and p < 1/2 (not convex) are excluded from this claim kind.
-    context.require(p > mpq_class(1, 2), "inputs.p", "outside the domain p > 1/2 of superdisk-optimum certificates");
-    const Json& proof = context.member(document, "proof", "");
-    if (context.string_at(proof, "kind", "proof") != "superdisk-branch-and-bound")
-        context.malformed("proof.kind", "expected \"superdisk-branch-and-bound\"");
-
+// The witness: an admissible hexagon lattice, so Delta(2K) <= 4 D(t_w). Returns D(t_w)'s upper
+// end, the bound every discarded piece must exceed.
+Real witness_upper_bound(const Json& proof, Context& context, SuperdiskChecker& checker) {
     const mpfr_prec_t precision = context.precision();
     const Real zero = integer(0, precision), one = integer(1, precision), four = integer(4, precision);
-    SuperdiskChecker checker(context, rational(p, precision));
-
-    // The witness: an admissible hexagon lattice, so Delta(2K) <= 4 D(t_w).
     const std::string witness_path = "proof.witness";
     const Json& witness = context.member(proof, "witness", "proof");
     const Real witness_t = context.interval(context.member(witness, "t", witness_path), witness_path + ".t");
@@ -132,16 +120,80 @@ std::string check_superdisk_optimum(const Json& claim, Context& context) {
                       witness_t, witness_path);
     check_encloses(context, context.member(witness, "determinant", witness_path), witness_path + ".determinant",
                    four * at_witness.d);
-    const Real upper = upper_point(at_witness.d);
+    return upper_point(at_witness.d);
+}
 
-    // The pieces: they cover [0, 1]; each is discarded (its lower bound of D exceeds D of the
-    // witness) or may hold a minimiser (its lower bound enters min D).
+// The checker's own lower bound of D on a piece t, by the piece's stated method; `tight`
+// re-proves the solution boxes tighter, for when the first bound falls short of the stated one.
+Real piece_lower_bound(const Json& piece, const Real& t, const std::string& method, const std::string& path, bool tight,
+                       Context& context, SuperdiskChecker& checker) {
+    if (method == "a_priori") return checker.a_priori_lower_bound(t, path);  // no solution needed
+    const Box box = context.box(context.member(piece, "search_box", path), path + ".search_box");
+    const Solution over = checker.solve(box, t, path, tight);
+    context.current_step = path;
+    Real bound = lower_point(over.d);  // the naive enclosure of D on the piece
+    if (method == "naive_and_mean_value") {
+        const Real center = context.interval(context.member(piece, "center", path), path + ".center");
+        context.require(subset(center, t), path + ".center", "the center is not in the piece");
+        const Solution at_center = checker.solve(box, center, path, tight);
+        const Real slope = checker.derivative(over, t);
+        const Real form = at_center.d + slope * (t - center);  // mean-value form of D on the piece
+        if (mpfr_cmp(form.lo(), bound.lo()) > 0) bound = lower_point(form);
+    } else if (method == "left_end" || method == "right_end") {
+        const bool left = method == "left_end";
+        const Real slope = checker.derivative(over, t);
+        context.require(left ? positive(slope) : negative(slope), path + ".method",
+                        std::string("D' is not certainly ") + (left ? "positive" : "negative") +
+                            " on the piece: checker's D' = " + text(slope));
+        const Solution at_end = checker.solve(box, left ? lower_point(t) : upper_point(t), path, tight);
+        bound = lower_point(at_end.d);
+    } else if (method != "naive") {
+        context.malformed(path + ".method", "unknown lower-bound method \"" + method + "\"");
+    }
+    return bound;
+}
+
+// What the pieces leave open: the t of every piece kept (it may hold a minimiser) and the least
+// lower bound of D over them (starting from the witness's D).
+struct OpenPieces {
+    std::vector<Real> t;
+    Real lowest;
+};
+
+// One piece t: the stated lower bound of D must not exceed the checker's, and the verdict must
+// follow from it: discarded (above the witness's D) or kept (monotone or bounded).
+void replay_piece(const Json& piece, const Real& t, const std::string& path, const Real& upper, OpenPieces& open,
+                  Context& context, SuperdiskChecker& checker) {
+    const Real stated = context.interval(context.member(piece, "lower_bound", path), path + ".lower_bound");
+    const std::string verdict = context.string_at(piece, "verdict", path);
+    const std::string method = context.string_at(piece, "method", path);
+    Real bound = piece_lower_bound(piece, t, method, path, false, context, checker);
+    if (mpfr_cmp(stated.lo(), bound.lo()) > 0) bound = piece_lower_bound(piece, t, method, path, true, context, checker);
+    context.require(mpfr_cmp(stated.lo(), bound.lo()) <= 0, path + ".lower_bound",
+                    "the stated lower bound " + text(stated) + " of D exceeds the checker's " + text(bound));
+    const bool monotone_method = method == "left_end" || method == "right_end";
+    if (verdict == "discarded") {
+        context.require(less(upper, bound), path + ".verdict",
+                        "not discarded: the lower bound " + text(bound) + " does not exceed D of the witness " +
+                            text(upper));
+    } else if (verdict == "monotone" || verdict == "bounded") {
+        context.require(monotone_method == (verdict == "monotone"), path + ".method",
+                        "the method does not fit the verdict " + verdict);
+        open.t.push_back(t);
+        if (mpfr_cmp(bound.lo(), open.lowest.lo()) < 0) open.lowest = bound;
+    } else {
+        context.malformed(path + ".verdict", "unknown verdict \"" + verdict + "\"");
+    }
+}
+
+// The pieces: they cover [0, 1]; each is discarded (its lower bound of D exceeds D of the
+// witness) or may hold a minimiser (its lower bound enters min D).
+OpenPieces replay_pieces(const Json& proof, const Real& upper, Context& context, SuperdiskChecker& checker) {
     const Json& pieces = context.member(proof, "pieces", "proof");
     if (!pieces.is_array()) context.malformed("proof.pieces", "expected an array");
     context.require(!pieces.empty(), "proof.pieces", "no pieces");
-    std::vector<Real> open_pieces;
-    Real lowest = upper;
-    Real reach(precision);
+    OpenPieces open{{}, upper};
+    Real reach(context.precision());
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         const std::string path = "proof.pieces[" + std::to_string(k) + "]";
         const Json& piece = pieces[k];
@@ -152,70 +204,17 @@ std::string check_superdisk_optimum(const Json& claim, Context& context) {
             context.require(mpfr_cmp(t.lo(), reach.lo()) <= 0, path + ".t",
                             "a gap before this piece: [0, 1] is not covered");
         if (k == 0 || mpfr_cmp(t.hi(), reach.lo()) > 0) reach = upper_point(t);
-        const Real stated = context.interval(context.member(piece, "lower_bound", path), path + ".lower_bound");
-        const std::string verdict = context.string_at(piece, "verdict", path);
-        const std::string method = context.string_at(piece, "method", path);
-        // The checker's own lower bound of D on the piece, by the stated method.
-        auto own_bound = [&](bool tight) {
-            if (method == "a_priori") return checker.a_priori_lower_bound(t, path);  // no solution needed
-            const Box box = context.box(context.member(piece, "search_box", path), path + ".search_box");
-            const Solution over = checker.solve(box, t, path, tight);
-            context.current_step = path;
-            Real bound = lower_point(over.d);  // the naive enclosure of D on the piece
-            if (method == "naive_and_mean_value") {
-                const Real center = context.interval(context.member(piece, "center", path), path + ".center");
-                context.require(subset(center, t), path + ".center", "the center is not in the piece");
-                const Solution at_center = checker.solve(box, center, path, tight);
-                const Real slope = checker.derivative(over, t);
-                const Real form = at_center.d + slope * (t - center);  // mean-value form of D on the piece
-                if (mpfr_cmp(form.lo(), bound.lo()) > 0) bound = lower_point(form);
-            } else if (method == "left_end" || method == "right_end") {
-                const bool left = method == "left_end";
-                const Real slope = checker.derivative(over, t);
-                context.require(left ? positive(slope) : negative(slope), path + ".method",
-                                std::string("D' is not certainly ") + (left ? "positive" : "negative") +
-                                    " on the piece: checker's D' = " + text(slope));
-                const Solution at_end = checker.solve(box, left ? lower_point(t) : upper_point(t), path, tight);
-                bound = lower_point(at_end.d);
-            } else if (method != "naive") {
-                context.malformed(path + ".method", "unknown lower-bound method \"" + method + "\"");
-            }
-            return bound;
-        };
-        Real bound = own_bound(false);
-        if (mpfr_cmp(stated.lo(), bound.lo()) > 0) bound = own_bound(true);
-        context.require(mpfr_cmp(stated.lo(), bound.lo()) <= 0, path + ".lower_bound",
-                        "the stated lower bound " + text(stated) + " of D exceeds the checker's " + text(bound));
-        const bool monotone_method = method == "left_end" || method == "right_end";
-        if (verdict == "discarded") {
-            context.require(less(upper, bound), path + ".verdict",
-                            "not discarded: the lower bound " + text(bound) + " does not exceed D of the witness " +
-                                text(upper));
-        } else if (verdict == "monotone" || verdict == "bounded") {
-            context.require(monotone_method == (verdict == "monotone"), path + ".method",
-                            "the method does not fit the verdict " + verdict);
-            open_pieces.push_back(t);
-            if (mpfr_cmp(bound.lo(), lowest.lo()) < 0) lowest = bound;
-        } else {
-            context.malformed(path + ".verdict", "unknown verdict \"" + verdict + "\"");
-        }
+        replay_piece(piece, t, path, upper, open, context, checker);
     }
     context.current_step = "proof.pieces";
     context.require(mpfr_cmp_si(reach.lo(), 1) >= 0, "proof.pieces", "the pieces do not reach t = 1");
-    context.require(!open_pieces.empty(), "proof.pieces", "every piece discarded, even the witness's");
+    context.require(!open.t.empty(), "proof.pieces", "every piece discarded, even the witness's");
+    return open;
+}
 
-    // The optimum: min D lies in [least lower bound of the pieces kept, D of the witness].
-    context.current_step = "claim.data";
-    const Real minimum = hull(lowest, upper);
-    const Real optimal_determinant = four * minimum;
-    const Real area = superdisk_area(rational(p, precision));
-    check_encloses(context, context.member(data, "area", "claim.data"), "claim.data.area", area);
-    const Real claimed_determinant = proved_enclosure(context, context.member(data, "optimal_determinant", "claim.data"),
-                                                      "claim.data.optimal_determinant", optimal_determinant);
-    const Real claimed_phi = proved_enclosure(context, context.member(data, "optimal_phi", "claim.data"), "claim.data.optimal_phi",
-                                              area / optimal_determinant);
-
-    // Every minimiser lies in a piece kept, so in an argmin component.
+// Every minimiser lies in a piece kept, so each kept piece must lie in an argmin component.
+// Returns the components.
+std::vector<Real> check_argmin(const Json& data, const std::vector<Real>& open_pieces, Context& context) {
     const Json& argmin_json = context.member(data, "argmin_t", "claim.data");
     if (!argmin_json.is_array()) context.malformed("claim.data.argmin_t", "expected an array");
     std::vector<Real> argmin;
@@ -224,8 +223,15 @@ std::string check_superdisk_optimum(const Json& claim, Context& context) {
     for (const Real& t : open_pieces)
         context.require(within_some(t, argmin), "claim.data.argmin_t",
                         "the piece " + text(t) + " may hold a minimiser but lies in no argmin interval");
+    return argmin;
+}
 
-    // The named lattices: Lambda1 has u on an axis (t = 0), Lambda0 on the diagonal (t = 1).
+// The named lattices: Lambda1 has u on an axis (t = 0), Lambda0 on the diagonal (t = 1). Each
+// one's determinant 4 D(t) and density are replayed; returns the determinants by name.
+std::vector<std::pair<std::string, Real>> check_named_lattices(const Json& data, const Json& proof, const Real& area,
+                                                               Context& context, SuperdiskChecker& checker) {
+    const mpfr_prec_t precision = context.precision();
+    const Real zero = integer(0, precision), one = integer(1, precision), four = integer(4, precision);
     const Json& lattices = context.member(data, "lattices", "claim.data");
     const Json& lattice_proofs = context.member(proof, "lattices", "proof");
     if (!lattices.is_object()) context.malformed("claim.data.lattices", "expected an object");
@@ -249,6 +255,15 @@ std::string check_superdisk_optimum(const Json& claim, Context& context) {
         check_encloses(context, context.member(lattice, "phi", path), path + ".phi", area / determinant);
         determinants.emplace_back(name, determinant);
     }
+    return determinants;
+}
+
+// The lattices claimed to attain the optimum: each is checked by name above, its determinant lies
+// in the enclosure of Delta(2K) and its t in an argmin component. Returns them in words.
+std::string check_attained(const Json& data, const std::vector<std::pair<std::string, Real>>& determinants,
+                           const Real& claimed_determinant, const std::vector<Real>& argmin, Context& context) {
+    const mpfr_prec_t precision = context.precision();
+    const Real zero = integer(0, precision), one = integer(1, precision);
     const Json& attained = context.member(data, "attained_by", "claim.data");
     if (!attained.is_array()) context.malformed("claim.data.attained_by", "expected an array of lattice names");
     std::string attained_words;
@@ -266,6 +281,39 @@ std::string check_superdisk_optimum(const Json& claim, Context& context) {
                         "the t of " + name + " lies in no argmin interval");
         attained_words += std::string(attained_words.empty() ? "" : " and ") + name + " (t = " + (name == "Lambda0" ? "1" : "0") + ")";
     }
+    return attained_words;
+}
+
+std::string check_superdisk_optimum(const Json& claim, Context& context) {
+    const Json& document = context.document();
+    const Json& data = context.member(claim, "data", "claim");
+    const Json& inputs = context.member(document, "inputs", "");
+    const mpq_class p = context.rational_at(data, "p", "claim.data");
+    context.require(context.rational_at(inputs, "p", "inputs") == p, "inputs.p", "the input p differs from the claim's");
+    // p = 1/2 (the square tiles) and p < 1/2 (not convex) are excluded from this claim kind.
+    context.require(p > mpq_class(1, 2), "inputs.p", "outside the domain p > 1/2 of superdisk-optimum certificates");
+    const Json& proof = context.member(document, "proof", "");
+    if (context.string_at(proof, "kind", "proof") != "superdisk-branch-and-bound")
+        context.malformed("proof.kind", "expected \"superdisk-branch-and-bound\"");
+
+    const mpfr_prec_t precision = context.precision();
+    SuperdiskChecker checker(context, rational(p, precision));
+    const Real upper = witness_upper_bound(proof, context, checker);
+    const OpenPieces open = replay_pieces(proof, upper, context, checker);
+
+    // The optimum: min D lies in [least lower bound of the pieces kept, D of the witness].
+    context.current_step = "claim.data";
+    const Real minimum = hull(open.lowest, upper);
+    const Real optimal_determinant = integer(4, precision) * minimum;
+    const Real area = superdisk_area(rational(p, precision));
+    check_encloses(context, context.member(data, "area", "claim.data"), "claim.data.area", area);
+    const Real claimed_determinant = proved_enclosure(context, context.member(data, "optimal_determinant", "claim.data"),
+                                                      "claim.data.optimal_determinant", optimal_determinant);
+    const Real claimed_phi = proved_enclosure(context, context.member(data, "optimal_phi", "claim.data"), "claim.data.optimal_phi",
+                                              area / optimal_determinant);
+    const std::vector<Real> argmin = check_argmin(data, open.t, context);
+    const auto determinants = check_named_lattices(data, proof, area, context, checker);
+    const std::string attained_words = check_attained(data, determinants, claimed_determinant, argmin, context);
 
     check_p_decimal(context, inputs, p);  // after the proof, which names a wrong p first
 

@@ -30,12 +30,9 @@ long floor_of_upper(const Real& x) {
     return result;
 }
 
-}  // namespace
-
-FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, const NamedReals& symbols, const Real& p,
-                                   const std::string& verdict, const Json& stated, const std::string& stated_path,
-                                   const Json& enumeration, const std::string& enumeration_path) {
-    const mpfr_prec_t precision = p.precision();
+// The values of the forms' symbols, in the forms' order, from the replayed parameters.
+std::vector<Real> symbol_values(Context& context, const FamilyForms& forms, const NamedReals& symbols,
+                                const std::string& enumeration_path) {
     std::vector<Real> values;
     for (const std::string& name : forms.symbols) {
         bool found = false;
@@ -46,26 +43,32 @@ FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, c
             }
         if (!found) context.malformed(enumeration_path, "no value for the symbol " + name);
     }
-    const Real two = integer(2, precision);
-    context.current_step = stated_path;
-    FamilyVerdict result;
-    if (verdict == "overlapping") {
-        if (!enumeration.is_null()) context.malformed(enumeration_path, "an overlap is proved by its witness: expected null");
-        const std::string path = stated_path + ".witness";
-        const Json& witness = context.member(stated, "witness", stated_path);
-        const Triple t = read_triple(context, context.member(witness, "coefficients", path), path + ".coefficients");
-        context.require(t != Triple{0, 0, 0}, path, "the zero vector is no witness");
-        const Real own = norm(coordinates(combination(forms, t), values, precision), p);
-        result.witness = t;
-        result.witness_norm = proved_enclosure(context, context.member(witness, "norm", path), path + ".norm", own);
-        context.require(less(own, two), path, "the witness norm " + text(own) + " is not certainly < 2");
-        return result;
-    }
-    if (verdict != "packing") context.malformed(stated_path + ".verdict", "expected packing or overlapping");
-    if (!enumeration.is_object() || context.string_at(enumeration, "kind", enumeration_path) != "enumeration")
-        context.malformed(enumeration_path, "a packing needs its enumeration");
+    return values;
+}
 
-    // The coefficient box from the checker's own basis: |a_i| <= 2 ||e_j x e_k||_1 / |det|.
+// An overlap: proved by its witness alone (no enumeration), a nonzero lattice vector whose norm
+// is certainly below 2.
+FamilyVerdict check_overlap_witness(Context& context, const FamilyForms& forms, const std::vector<Real>& values,
+                                    const Real& p, const Json& stated, const std::string& stated_path,
+                                    const Json& enumeration, const std::string& enumeration_path) {
+    const mpfr_prec_t precision = p.precision();
+    FamilyVerdict result;
+    if (!enumeration.is_null()) context.malformed(enumeration_path, "an overlap is proved by its witness: expected null");
+    const std::string path = stated_path + ".witness";
+    const Json& witness = context.member(stated, "witness", stated_path);
+    const Triple t = read_triple(context, context.member(witness, "coefficients", path), path + ".coefficients");
+    context.require(t != Triple{0, 0, 0}, path, "the zero vector is no witness");
+    const Real own = norm(coordinates(combination(forms, t), values, precision), p);
+    result.witness = t;
+    result.witness_norm = proved_enclosure(context, context.member(witness, "norm", path), path + ".norm", own);
+    context.require(less(own, integer(2, precision)), path, "the witness norm " + text(own) + " is not certainly < 2");
+    return result;
+}
+
+// The coefficient box from the checker's own basis: |a_i| <= 2 ||e_j x e_k||_1 / |det|; the
+// stated box must hold it.
+Triple coefficient_bound(Context& context, const FamilyForms& forms, const std::vector<Real>& values, mpfr_prec_t precision,
+                         const Json& enumeration, const std::string& enumeration_path) {
     std::array<Coordinates, 3> rows{coordinates(forms.basis[0], values, precision),
                                     coordinates(forms.basis[1], values, precision),
                                     coordinates(forms.basis[2], values, precision)};
@@ -78,14 +81,23 @@ FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, c
     Triple bound;
     for (int i = 0; i < 3; ++i) {
         const Coordinates normal = cross(rows[(i + 1) % 3], rows[(i + 2) % 3]);
-        const long n = floor_of_upper(two * (abs(normal[0]) + abs(normal[1]) + abs(normal[2])) / abs(det));
+        const long n = floor_of_upper(integer(2, precision) * (abs(normal[0]) + abs(normal[1]) + abs(normal[2])) / abs(det));
         context.require(n >= 0, enumeration_path + ".coefficient_bound", "the coefficient box is too large to enumerate");
         bound[i] = n;
         context.require(stated_bound[i] >= n, enumeration_path + ".coefficient_bound",
                         "the stated bound " + std::to_string(stated_bound[i]) + " on coefficient " + std::to_string(i) +
                             " is below the checker's " + std::to_string(n));
     }
+    return bound;
+}
 
+// Every canonical triple of the box decided: a contact by one of the family's identities, or
+// norm certainly above 2 (certainly below 2 refutes the packing). Returns the contacts.
+std::set<Triple> enumerate_contacts(Context& context, const FamilyForms& forms, const std::vector<Real>& values,
+                                    const Real& p, const Triple& bound, const std::string& stated_path,
+                                    const std::string& enumeration_path) {
+    const mpfr_prec_t precision = p.precision();
+    const Real two = integer(2, precision);
     std::set<Triple> contacts;
     for (long a = 0; a <= bound[0]; ++a)
         for (long b = (a == 0 ? 0 : -bound[1]); b <= bound[1]; ++b)
@@ -107,7 +119,13 @@ FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, c
                                 "the norm enclosure " + text(own) + " of " + triple_text(t) +
                                     " holds 2 and no contact identity of the family decides it");
             }
+    return contacts;
+}
 
+// The stated contact count and vectors, and the enumeration's listed contacts, must all be the
+// checker's contacts. Returns the count.
+long check_stated_contacts(Context& context, const std::set<Triple>& contacts, const Json& stated,
+                           const std::string& stated_path, const Json& enumeration, const std::string& enumeration_path) {
     const Json& count = context.member(stated, "contacts", stated_path);
     if (!count.is_number_integer()) context.malformed(stated_path + ".contacts", "expected an integer");
     context.require(count.get<long>() == 2 * static_cast<long>(contacts.size()), stated_path + ".contacts",
@@ -133,8 +151,26 @@ FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, c
     }
     context.require(listed_contacts == contacts, enumeration_path + ".contacts",
                     "the listed contacts differ from the checker's (each must be one of the family's identities)");
+    return count.get<long>();
+}
+
+}  // namespace
+
+FamilyVerdict check_family_verdict(Context& context, const FamilyForms& forms, const NamedReals& symbols, const Real& p,
+                                   const std::string& verdict, const Json& stated, const std::string& stated_path,
+                                   const Json& enumeration, const std::string& enumeration_path) {
+    const std::vector<Real> values = symbol_values(context, forms, symbols, enumeration_path);
+    context.current_step = stated_path;
+    if (verdict == "overlapping")
+        return check_overlap_witness(context, forms, values, p, stated, stated_path, enumeration, enumeration_path);
+    if (verdict != "packing") context.malformed(stated_path + ".verdict", "expected packing or overlapping");
+    if (!enumeration.is_object() || context.string_at(enumeration, "kind", enumeration_path) != "enumeration")
+        context.malformed(enumeration_path, "a packing needs its enumeration");
+    const Triple bound = coefficient_bound(context, forms, values, p.precision(), enumeration, enumeration_path);
+    const std::set<Triple> contacts = enumerate_contacts(context, forms, values, p, bound, stated_path, enumeration_path);
+    FamilyVerdict result;
     result.packing = true;
-    result.contacts = count.get<long>();
+    result.contacts = check_stated_contacts(context, contacts, stated, stated_path, enumeration, enumeration_path);
     return result;
 }
 

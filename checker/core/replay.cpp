@@ -62,6 +62,37 @@ Width total_width(const Box& box) {
     return sum;
 }
 
+// The Krawczyk operator on X = current: K(X) = m - C F(m) + (I - C J(X)) (X - m), with m the
+// midpoint, C the inverse of the midpoint Jacobian and J(X) = jacobian; with a parameter, F(m)
+// is taken at p0 and its drift C F_p(m, P) (P - p0) subtracted.
+Box krawczyk_image(const System& system, const Box& current, const std::vector<std::vector<Real>>& jacobian,
+                   const std::vector<std::vector<double>>& inverse, const ParameterForm* parameter) {
+    const std::size_t n = current.size();
+    const mpfr_prec_t precision = current[0].precision();
+    Box center, offset;
+    for (const Real& x : current) {
+        center.push_back(midpoint(x));
+        offset.push_back(x - center.back());
+    }
+    const std::vector<Real> at_center = parameter ? parameter->value_at_p0(center) : system.value(center);
+    const std::vector<Real> slope = parameter ? parameter->derivative(center) : std::vector<Real>();
+    Box image;
+    for (std::size_t i = 0; i < n; ++i) {
+        Real k = center[i];
+        Real drift = integer(0, precision);  // (C F_p(m, P))_i
+        for (std::size_t j = 0; j < n; ++j) {
+            k = k - exact_double(inverse[i][j], precision) * at_center[j];
+            if (parameter) drift = drift + exact_double(inverse[i][j], precision) * slope[j];
+            Real entry = integer(i == j ? 1 : 0, precision);
+            for (std::size_t l = 0; l < n; ++l) entry = entry - exact_double(inverse[i][l], precision) * jacobian[l][j];
+            k = k + entry * offset[j];
+        }
+        if (parameter) k = k - drift * parameter->offset;
+        image.push_back(k);
+    }
+    return image;
+}
+
 }  // namespace
 
 KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_iterations, const ParameterForm* parameter) {
@@ -87,29 +118,13 @@ KrawczykReplay replay_krawczyk(const System& system, const Box& box, int max_ite
             result.reason = "midpoint Jacobian singular";
             break;
         }
-        Box center, offset;
-        for (const Real& x : current) {
-            center.push_back(midpoint(x));
-            offset.push_back(x - center.back());
-        }
-        const std::vector<Real> at_center = parameter ? parameter->value_at_p0(center) : system.value(center);
-        const std::vector<Real> slope = parameter ? parameter->derivative(center) : std::vector<Real>();
+        const Box image = krawczyk_image(system, current, jacobian, inverse, parameter);
         Box next;
         bool interior = true;
         for (std::size_t i = 0; i < n; ++i) {
-            Real k = center[i];
-            Real drift = integer(0, precision);  // (C F_p(m, P))_i
-            for (std::size_t j = 0; j < n; ++j) {
-                k = k - exact_double(inverse[i][j], precision) * at_center[j];
-                if (parameter) drift = drift + exact_double(inverse[i][j], precision) * slope[j];
-                Real entry = integer(i == j ? 1 : 0, precision);
-                for (std::size_t l = 0; l < n; ++l) entry = entry - exact_double(inverse[i][l], precision) * jacobian[l][j];
-                k = k + entry * offset[j];
-            }
-            if (parameter) k = k - drift * parameter->offset;
-            interior = interior && interior_subset(k, current[i]);
+            interior = interior && interior_subset(image[i], current[i]);
             Real meet(precision);
-            if (!intersect(meet, k, current[i])) {
+            if (!intersect(meet, image[i], current[i])) {
                 result.status = exists ? ReplayStatus::undecided : ReplayStatus::none;
                 result.reason = exists ? "inconsistent: a proved root vanished" : "K(X) disjoint from X";
                 return result;
