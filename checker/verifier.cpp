@@ -8,9 +8,9 @@
 #include <optional>
 #include <sstream>
 
-#include "checker/document_check.hpp"
-#include "checker/json_reader.hpp"
-#include "checker/limits.hpp"
+#include "checker/core/document_check.hpp"
+#include "checker/core/json_reader.hpp"
+#include "checker/core/limits.hpp"
 
 namespace superpack_checker {
 

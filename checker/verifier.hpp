@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "checker/json_reader.hpp"
-#include "checker/real.hpp"
+#include "checker/core/json_reader.hpp"
+#include "checker/core/real.hpp"
 
 namespace superpack_checker {
 
@@ -47,7 +47,7 @@ struct VerifySettings {
 };
 
 // A document, the text of a file, or a file: whatever cannot be read within the limits of
-// checker/limits.hpp (NOTES.md 8.8), is not JSON, or is not a regular file is malformed, with
+// checker/core/limits.hpp (NOTES.md 8.8), is not JSON, or is not a regular file is malformed, with
 // one line saying why (and the path in the document where that applies).
 VerifyReport verify_document(const Json& document, const VerifySettings& settings = {});
 VerifyReport verify_text(const std::string& text);

@@ -6,7 +6,8 @@ their own layer and the ones below it:   arith -> solve -> geometry -> problems 
 -> python (the Python module, which runs the command lines of cli).
 sim/ (floating point only) may include arith, solve and geometry, and only cli includes sim.
 problems/ is one room per feature (ROOMS below): a room includes its own and earlier rooms only.
-checker/ includes nothing of the repository but checker/ itself: it is the independent side.
+checker/ (all its rooms: core/, formulas/, claims/) includes nothing of the repository but
+checker/ itself: it is the independent side.
 tests/ and bench/ may include anything. Libraries: the checker uses none of the producer's
 arithmetic libraries (Arb/FLINT, Boost, Eigen), and Eigen is seen only by the one file that
 computes preconditioners, so no public header pulls it in; Arb/FLINT and MPFR reach a public
@@ -209,16 +210,16 @@ def self_test():
     graph = {
         "/repository/src/arith/a.cpp": ["/repository/include/superpack/problems/families/families.hpp"],
         "/repository/include/superpack/geometry/g.hpp": ["/repository/include/superpack/cert/c.hpp"],
-        "/repository/checker/real.cpp": ["/repository/include/superpack/arith/interval.hpp"],
-        "/repository/checker/claim.cpp": ["/repository/src/arith/arb_support.hpp"],
+        "/repository/checker/core/real.cpp": ["/repository/include/superpack/arith/interval.hpp"],
+        "/repository/checker/claims/claim.cpp": ["/repository/src/arith/arb_support.hpp"],
         "/repository/src/problems/p.cpp": ["/repository/checker/verifier.hpp"],
         "/repository/src/cert/c.cpp": ["/repository/src/sim/s.hpp"],
         "/repository/src/sim/s.cpp": ["/repository/include/superpack/cert/c.hpp"],
         "/repository/src/cli/ok.cpp": ["/repository/include/superpack/arith/interval.hpp",
                                        "/repository/checker/verifier.hpp", "/usr/include/gmp.h"],
-        "/repository/checker/ok.cpp": ["/repository/checker/real.hpp", "/usr/include/mpfi.h"],
+        "/repository/checker/formulas/ok.cpp": ["/repository/checker/core/real.hpp", "/usr/include/mpfi.h"],
         "/repository/src/geometry/ok.cpp": ["/repository/include/superpack/solve/krawczyk.hpp"],
-        "/repository/checker/arb.cpp": ["/usr/include/flint/arb.h"],
+        "/repository/checker/formulas/arb.cpp": ["/usr/include/flint/arb.h"],
         "/repository/include/superpack/solve/krawczyk.hpp": ["/usr/include/eigen3/Eigen/Dense"],
         "/repository/src/solve/approximate_inverse.cpp": ["/usr/include/eigen3/Eigen/Dense"],
         "/repository/include/superpack/arith/interval.hpp": ["/usr/include/mpfr.h"],

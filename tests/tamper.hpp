@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "checker/render.hpp"
+#include "checker/core/render.hpp"
 #include "checker/verifier.hpp"
 
 namespace superpack::test {

@@ -8,9 +8,9 @@
 #include <iostream>
 #include <set>
 
-#include "checker/equations.hpp"
-#include "checker/equations_audit.hpp"
-#include "checker/family_parameters.hpp"
+#include "checker/claims/family_parameters.hpp"
+#include "checker/formulas/equations.hpp"
+#include "checker/formulas/equations_audit.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/cert/audit_certificate.hpp"
 #include "tamper.hpp"

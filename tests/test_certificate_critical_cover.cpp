@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "checker/critical_claim.hpp"
+#include "checker/claims/critical_claim.hpp"
 #include "checker/verifier.hpp"
 #include "critical_certificates.hpp"
 #include "scratch.hpp"

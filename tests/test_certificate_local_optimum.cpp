@@ -10,8 +10,8 @@
 
 #include <filesystem>
 
-#include "checker/equations_kkt.hpp"
-#include "checker/render.hpp"
+#include "checker/core/render.hpp"
+#include "checker/formulas/equations_kkt.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/cert/local_optimum_certificate.hpp"
 #include "superpack/problems/best/best.hpp"

@@ -1,4 +1,4 @@
-// Certificates of kind "periodic-packing" (checker/claim_periodic_packing.cpp, NOTES.md 14): N
+// Certificates of kind "periodic-packing" (checker/claims/claim_periodic_packing.cpp, NOTES.md 14): N
 // rotated superballs repeated by a lattice, each close pair separated by a plane. Documents built
 // here from exact rationals (touching balls in 2Z^3, two touching superballs at p = 2 in 4Z^3,
 // rotated ones by 90 and about 53 degrees) verify and say what was verified; a missing pair, a
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "checker/render.hpp"
+#include "checker/core/render.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/cert/periodic_certificate.hpp"
 #include "superpack/problems/periodic/periodic_packing.hpp"

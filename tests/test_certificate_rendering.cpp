@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "checker/json_reader.hpp"
+#include "checker/core/json_reader.hpp"
 #include "checker/verifier.hpp"
 #include "superpack/cert/audit_certificate.hpp"
 #include "superpack/cert/crossover_certificate.hpp"

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <random>
 
-#include "checker/star_cases.hpp"
+#include "checker/formulas/star_cases.hpp"
 #include "checker/verifier.hpp"
 #include "cli_run.hpp"
 #include "superpack/cert/star_lattice_certificate.hpp"

@@ -1,14 +1,14 @@
 // The checker on hostile or unusual input (NOTES.md 8.8): its precision follows the certificate's
 // (a 700-digit certificate verifies) and "bits" must match the backend; every limit of
-// checker/limits.hpp is enforced with a one-line rejection that names it, before the heavy work;
+// checker/core/limits.hpp is enforced with a one-line rejection that names it, before the heavy work;
 // duplicate keys, directories and missing files are unreadable, not internal errors.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
-#include "checker/json_reader.hpp"
-#include "checker/limits.hpp"
+#include "checker/core/json_reader.hpp"
+#include "checker/core/limits.hpp"
 #include "checker/verifier.hpp"
 #include "crossover_reference.hpp"
 #include "superpack/cert/crossover_certificate.hpp"

@@ -1,4 +1,4 @@
-// The checker's chart powers (checker/chart_power.cpp) at exact rational exponents a/b, taken as
+// The checker's chart powers (checker/formulas/chart_power.cpp) at exact rational exponents a/b, taken as
 // the b-th root of e^|a| with outward rounding instead of exp(y log e). Each enclosure is compared
 // with MPFI's exp(y log e) at 512 bits (another algorithm): the two must meet, and the root path
 // must be tight (a few ulps at 128 bits). Bases run from the smallest subnormal to 1e30; where
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "checker/chart_power.hpp"
+#include "checker/formulas/chart_power.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <iostream>
 #include <random>
 
-#include "checker/equations.hpp"
+#include "checker/formulas/equations.hpp"
 #include "support.hpp"
 #include "superpack/arith/mpfr_bounds.hpp"
 

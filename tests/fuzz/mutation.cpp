@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "checker/limits.hpp"
+#include "checker/core/limits.hpp"
 
 namespace superpack_fuzz {
 
