@@ -85,14 +85,13 @@ SearchLattice<I> check_candidate(const SearchCandidate& candidate, const Rationa
     return {candidate, exact, scale_exponent, std::move(check), phi};
 }
 
+// The families at p, each certified and checked (those outside their domain only named), and
+// the search's starts: their lattices and the classical ones. Below 1/2 the convex families are
+// outside their domains and the insertion is the published lattice; at 1/2 it is Minkowski's
+// octahedron packing, as O1 is.
 template <class Field, class I = typename Field::Interval>
-BestLattice<I> find_best(const Rational& p, const Field& field, const BestOptions& options) {
-    require_best_domain(p);
-    BestLattice<I> best;
-    const I p_interval = field.rational(p);
+std::vector<SearchStart> certify_families(const Rational& p, const Field& field, BestLattice<I>& best) {
     std::vector<SearchStart> starts;
-    // Below 1/2 the convex families are outside their domains and the insertion is the
-    // published lattice; at 1/2 it is Minkowski's octahedron packing, as O1 is.
     for (Family family : convex_families_and_insertion()) {
         if (!family_domain(family, p).inside()) {
             best.outside_domain.push_back(to_string(family));
@@ -104,17 +103,24 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
         best.families.push_back({std::move(lattice), std::move(check)});
     }
     for (const SearchStart& start : classical_starts()) starts.push_back(start);
-    const I volume = enclose_ball_volume(p_interval, 3);
-    best.search = search_dense_lattices(mid_double(p_interval), mid_double(volume), starts, options.search);
+    return starts;
+}
 
-    // The densest family proved a packing is the bar a search lattice must pass.
+// The densest family proved a packing: the bar a search lattice must pass.
+template <class I>
+std::optional<std::size_t> densest_family(const BestLattice<I>& best) {
     std::optional<std::size_t> leader;
     for (std::size_t k = 0; k < best.families.size(); ++k) {
         const FamilyEntry<I>& entry = best.families[k];
         if (entry.check.verdict != Outcome::proved || !entry.lattice.phi) continue;
         if (!leader || mid_double(*entry.lattice.phi) > mid_double(*best.families[*leader].lattice.phi)) leader = k;
     }
-    const double bar = leader ? mid_double(*best.families[*leader].lattice.phi) : 0;
+    return leader;
+}
+
+// The search's candidates above the bar, at most four and none repeated, certified or rejected.
+template <class Field, class I = typename Field::Interval>
+void check_candidates(const Rational& p, const Field& field, double bar, BestLattice<I>& best) {
     constexpr std::size_t most_checked = 4;
     for (const SearchCandidate& candidate : best.search.candidates) {
         bool repeated = false;
@@ -126,6 +132,18 @@ BestLattice<I> find_best(const Rational& p, const Field& field, const BestOption
         }
         best.checked.push_back(check_candidate(candidate, p, field));
     }
+}
+
+template <class Field, class I = typename Field::Interval>
+BestLattice<I> find_best(const Rational& p, const Field& field, const BestOptions& options) {
+    require_best_domain(p);
+    BestLattice<I> best;
+    const I p_interval = field.rational(p);
+    const std::vector<SearchStart> starts = certify_families(p, field, best);
+    const I volume = enclose_ball_volume(p_interval, 3);
+    best.search = search_dense_lattices(mid_double(p_interval), mid_double(volume), starts, options.search);
+    const std::optional<std::size_t> leader = densest_family(best);
+    check_candidates(p, field, leader ? mid_double(*best.families[*leader].lattice.phi) : 0, best);
 
     // A search lattice replaces the lattice named so far only when its certified phi is certainly
     // larger: one that coincides with a family (S6 on (p*_o, 1): the search lattice is S6's basis

@@ -273,36 +273,46 @@ AuditRange claimed_audit_range(Family family) {
 
 AuditSettings default_audit_settings(Family family) { return family_definition(family).audit_settings; }
 
-AuditResult audit_family(Family family, const AuditRange& range, const AuditSettings& settings, AuditBranch branch,
-                         const AuditProgress& progress) {
+namespace {
+
+// The audit's input contract, checked before any piece (S6's range: sound but stricter than
+// p*_o < p < 1, the rational ends are compared exactly).
+void require_audit_input(Family family, const AuditRange& range, AuditBranch branch) {
     if (branch == AuditBranch::o1_second_root && family != Family::O1)
         throw InputError("the second root branch exists for O1 only");
     if (!(range.lo < range.hi)) throw InputError("empty p range");
-    AuditResult result{family, branch, range, {}, std::nullopt};
-    const Rational anchor = s6_seed_p();
     if (family == Family::S6) {
-        // Sound but stricter than p*_o < p < 1: the rational ends are compared exactly.
+        const Rational anchor = s6_seed_p();
         if (range.lo < octahedral_crossover_above() || !(range.hi < Rational(1)))
             throw InputError("an S6 audit range must lie in [792482/10^6, 1) (S6 is defined on (p*_o, 1))");
         if (range.lo > anchor || range.hi < anchor)
             throw InputError("an S6 audit range must hold p = 9/10, where the branch is anchored by its point proof");
     }
+}
+
+// The ends of the segments cut into pieces: the range's, its breaks and (S6) the anchor 9/10.
+std::vector<Rational> segment_ends(Family family, const AuditRange& range) {
+    const Rational anchor = s6_seed_p();
     std::vector<Rational> ends{range.lo};
     if (family == Family::S6 && range.lo < anchor && anchor < range.hi) ends.push_back(anchor);
     for (const Rational& b : range.breaks)
         if (b > range.lo && b < range.hi) ends.push_back(b);
     ends.push_back(range.hi);
     std::sort(ends.begin(), ends.end());
-    const Rational total = range.hi - range.lo;
+    return ends;
+}
+
+// Where the continuation of a family's root starts: the registry's start (O1's second root at
+// (q, s) = (5/12, 1/6)), or the complete root search at the exact left end when the range does
+// not start at 1/2 (D14: its branch root comes first), or S6's point proof at 9/10 (kept in the
+// result as its anchor). Nothing for the families whose pieces need no continuation.
+std::optional<BranchTracker> continuation(Family family, const AuditRange& range, AuditBranch branch, AuditResult& result) {
     std::optional<BranchTracker> tracker;
     const std::vector<double>& continuation_start = family_definition(family).continuation_start;
     if (!continuation_start.empty()) {
-        // O1's second root starts at (q, s) = (5/12, 1/6).
         const std::vector<double> root = branch == AuditBranch::published ? continuation_start : std::vector{5.0 / 12, 1.0 / 6};
         tracker = BranchTracker{root, std::nullopt, std::nullopt, false};
         if (range.lo != Rational(1, 2)) {
-            // Start the continuation from the complete root search at the exact left end (D14:
-            // its branch root comes first).
             const FamilyLattice<DInterval> start = enclose_family_at(family, piece_interval(range.lo, range.lo));
             if (start.branches.empty() || (family == Family::D14 && start.status != Outcome::proved))
                 throw std::runtime_error(std::string("no root of the ") + to_string(family) +
@@ -319,6 +329,19 @@ AuditResult audit_family(Family family, const AuditRange& range, const AuditSett
         tracker = BranchTracker{{}, std::nullopt, start, false};
         result.anchor = start;
     }
+    return tracker;
+}
+
+}  // namespace
+
+AuditResult audit_family(Family family, const AuditRange& range, const AuditSettings& settings, AuditBranch branch,
+                         const AuditProgress& progress) {
+    require_audit_input(family, range, branch);
+    AuditResult result{family, branch, range, {}, std::nullopt};
+    const Rational anchor = s6_seed_p();
+    const std::vector<Rational> ends = segment_ends(family, range);
+    const Rational total = range.hi - range.lo;
+    std::optional<BranchTracker> tracker = continuation(family, range, branch, result);
     const std::optional<BranchTracker> anchored = tracker;
     std::vector<long> counts;
     for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
