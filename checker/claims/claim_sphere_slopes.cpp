@@ -3,7 +3,7 @@
 // a_plus (the larger cubic slope: at p = 1 both cubic densities are pi/sqrt18, so the denser
 // cubic family just right of 1 is the one with the larger slope), and the paper's closed forms
 // and printed decimals with three-valued verdicts. The checker recomputes every slope by
-// implicit differentiation in its own arithmetic (checker/equations_crossover.*). The paper's
+// implicit differentiation in its own arithmetic (checker/formulas/equations_crossover.*). The paper's
 // printed values and closed forms come from the checker's table (literature.hpp): the printed
 // value named in the data must be the table's.
 //

@@ -2,7 +2,7 @@
 // arithmetic (no automatic differentiation, nothing from the producer): the p-derivatives of
 // the pieces of phi = V_sb(p) / |det B| for C0, C1 and O0, the implicit derivative of the
 // contact root s(p), the closed-form determinants (proved equal to the determinants of the
-// bases in checker/equations.* by an exact polynomial identity), and the sphere point p = 1
+// bases in checker/formulas/equations.* by an exact polynomial identity), and the sphere point p = 1
 // in exact arithmetic over Q(sqrt2).
 #pragma once
 #include <gmpxx.h>

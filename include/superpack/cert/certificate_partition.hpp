@@ -1,7 +1,7 @@
 // Proof trees for branch-and-bound results: the partition behind isolate_roots (solve/root_partition.hpp)
 // as a certificate tree of {"kind": "split", "box", "dimension", "cases": [a, b]} nodes with
 // "excluded" and "krawczyk" leaves (NOTES.md section 8). Any claim kind whose proof is a
-// root search uses partition_json; the checker walks it with check_partition (checker/replay.hpp).
+// root search uses partition_json; the checker walks it with check_partition (checker/core/replay.hpp).
 #pragma once
 #include <stdexcept>
 #include <vector>

@@ -11,7 +11,7 @@
 
 namespace superpack {
 
-// The checker's file limit, which a certificate may not exceed (checker/limits.hpp).
+// The checker's file limit, which a certificate may not exceed (checker/core/limits.hpp).
 constexpr std::size_t critical_certificate_bytes = std::size_t{256} << 20;
 
 // Throws std::runtime_error unless the result is proved and carries its trees

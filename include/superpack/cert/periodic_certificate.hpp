@@ -1,6 +1,6 @@
 // The "periodic-packing" certificate of `superpack simulate`: the exact configuration proved by
 // problems/periodic/periodic_packing.hpp, with one separating normal per close pair; the checker
-// (checker/claim_periodic_packing.cpp) enumerates the close pairs itself and replays each plane.
+// (checker/claims/claim_periodic_packing.cpp) enumerates the close pairs itself and replays each plane.
 #pragma once
 #include "superpack/cert/certificate.hpp"
 #include "superpack/problems/periodic/periodic_packing.hpp"

@@ -60,7 +60,7 @@ FamilyLattice<I> enclose_d14(Family family, const I& p) {
                 lattice.branches.begin() + static_cast<long>(on_branch.front()) + 1);
     // Krawczyk on a wide piece stops once one step no longer halves the box; run again from the
     // root box (it holds the root, and so does every iterate) until the box stops shrinking. The
-    // checker tightens its own box the same way (checker/family_parameters.cpp).
+    // checker tightens its own box the same way (checker/claims/family_parameters.cpp).
     std::vector<I> root = lattice.branches.front().proof.root;
     for (int round = 0; round < 16; ++round) {
         const KrawczykResult<I> tighter = krawczyk_isolate(equations, root, 0.0, 60);
