@@ -18,7 +18,7 @@
 #       2,061,472 boxes; 107 s on 1 thread and 55 s on 2 on an idle machine (NOTES 12.6 bench);
 #       329 s on 1 thread and 225 to 305 s on 2 while other builds shared the 2 cores. The counts
 #       are the same on any number of threads when the bound is proved: the leaves' reasons do not
-#       depend on the order in which boxes are taken (src/problems/critical/critical.cpp, WorkQueue); the
+#       depend on the order in which boxes are taken (the branch-and-bound engine, include/superpack/solve/branch_and_bound.hpp); the
 #       document differs between 1 and 2 threads only in "threads", which echoes the option, and
 #       "seconds". Both sides use 2, which only shortens the wall time.)
 #   superpack audit --json --output-directory audit   (every family by default: C0, C1, O0, O1,

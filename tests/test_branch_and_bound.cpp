@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <set>
+#include <stdexcept>
 #include <thread>
 
 #include "superpack/solve/branch_and_bound.hpp"
@@ -18,6 +19,7 @@ namespace {
 struct Dyadic {
     long lo = 0, hi = 1;  // [lo, hi) * 2^-depth
     int depth = 0;
+    bool filed = false;   // DeferringDriver: deferred once already
 };
 
 enum Reason : std::size_t { free_of_thirds, holds_a_third, left_open };
@@ -40,10 +42,13 @@ struct ThirdsDriver {
     int floor = 6;
     std::vector<Leaf> leaves;
     long stop_at_lo = -1;  // a free leaf starting here stops the run (at the floor depth)
-    bool slow = false;     // each box takes a millisecond (for progress lines)
+    std::atomic<int>* wait_for_progress = nullptr;  // the first box waits (up to 10 s) for a progress line
+    long throw_at_lo = -1;  // examining the floor interval starting here throws
 
     Examined<Box, Leaf> examine(const Box& box, Visit& visit) const {
-        if (slow) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        for (int waited = 0; wait_for_progress && *wait_for_progress == 0 && waited < 10000; ++waited)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        if (box.depth == floor && box.lo == throw_at_lo) throw std::runtime_error("the driver failed");
         if (!holds_third(box)) {
             if (visit.letters) *visit.letters += 'F';
             const bool stop = box.depth == floor && box.lo == stop_at_lo;
@@ -127,16 +132,99 @@ TEST_CASE("branch and bound: a budget leaves the boxes still queued unexamined, 
     }
 }
 
-TEST_CASE("branch and bound: a leaf that stops the run leaves the rest unexamined") {
+TEST_CASE("branch and bound: a leaf that answers the run drops the rest") {
     ThirdsDriver driver;
     driver.stop_at_lo = 43;  // the free floor interval [43, 44) of 64ths, beside 2/3's [42, 43)
     const BranchResult<Dyadic> result = branch_and_bound(driver, {Dyadic{}}, BranchOptions{});
     CHECK(result.stopped);
+    CHECK(result.counts.size() < 3);  // no leaf left unexamined
+    CHECK(result.examined == result.processed);
+    // Depth first, everything left of the stopping leaf was decided before it, and it came last.
+    REQUIRE(!driver.leaves.empty());
+    CHECK(driver.leaves.back().box.lo == 43);
+    long reach = 0;
+    for (const Leaf& leaf : driver.leaves) {
+        CHECK((leaf.box.lo << (driver.floor - leaf.box.depth)) == reach);
+        reach = leaf.box.hi << (driver.floor - leaf.box.depth);
+    }
+    CHECK(reach == 44);
+}
+
+namespace {
+
+// New boxes are deferred into best-first order by their left end (so the leaves still close
+// from left to right), and a box taken back is decided as ThirdsDriver does; from `stop_from`
+// (in 64ths) on, a box taken back stops the run instead.
+struct DeferringDriver : ThirdsDriver {
+    long stop_from = -1;
+    std::vector<Visit> visits;
+
+    Examined<Box, Leaf> examine(const Box& box, Visit& visit) {
+        visits.push_back(visit);
+        const long left = box.lo << (floor - box.depth);
+        if (!box.filed) {
+            Dyadic filed = box;
+            filed.filed = true;
+            return defer_of<Box, Leaf>(filed, static_cast<double>(left));
+        }
+        if (stop_from >= 0 && left >= stop_from) return stop_at<Box, Leaf>(box);
+        return ThirdsDriver::examine(box, visit);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("branch and bound: deferred boxes are taken by priority after the stack, with exact visit counts") {
+    DeferringDriver driver;
+    const BranchResult<Dyadic> result = branch_and_bound(driver, {Dyadic{}}, BranchOptions{});
+    CHECK(!result.stopped);
+    REQUIRE(result.counts.size() >= 2);
+    CHECK(result.counts[holds_a_third] == 3);
+    long reach = 0;
+    for (const Leaf& leaf : driver.leaves) {
+        CHECK((leaf.box.lo << (driver.floor - leaf.box.depth)) == reach);
+        reach = leaf.box.hi << (driver.floor - leaf.box.depth);
+    }
+    CHECK(reach == 64);
+    // The root new, then taken back; its children new (the second waits on the stack), then
+    // both deferred and the first taken back.
+    REQUIRE(driver.visits.size() >= 5);
+    const long expected[5][3] = {{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 1, 1}};
+    for (int k = 0; k < 5; ++k) {
+        INFO("visit " << k);
+        CHECK(driver.visits[k].closed_leaves == expected[k][0]);
+        CHECK(driver.visits[k].queued == expected[k][1]);
+        CHECK(driver.visits[k].deferred == expected[k][2]);
+    }
+}
+
+TEST_CASE("branch and bound: stopping at a box leaves it and the rest unexamined, it first") {
+    DeferringDriver driver;
+    driver.stop_from = 32;
+    const BranchResult<Dyadic> result = branch_and_bound(driver, {Dyadic{}}, BranchOptions{});
+    CHECK(result.stopped);
     REQUIRE(result.counts.size() == 3);
-    CHECK(result.counts[left_open] > 0);
-    // Depth first, everything left of the stopping leaf was decided before it.
-    for (const Leaf& leaf : driver.leaves)
-        if (leaf.reason != left_open) CHECK((leaf.box.lo << (driver.floor - leaf.box.depth)) <= 43);
+    CHECK(result.counts[left_open] >= 1);
+    const auto first_left = std::find_if(driver.leaves.begin(), driver.leaves.end(),
+                                         [](const Leaf& leaf) { return leaf.reason == left_open; });
+    REQUIRE(first_left != driver.leaves.end());
+    CHECK(first_left->box.lo == 1);
+    CHECK(first_left->box.depth == 1);  // [1/2, 1), the box taken back
+    long length = 0;
+    for (const Leaf& leaf : driver.leaves) length += (leaf.box.hi - leaf.box.lo) << (driver.floor - leaf.box.depth);
+    CHECK(length == 64);
+}
+
+TEST_CASE("branch and bound: a driver's exception ends the run and reaches the caller on any number of threads") {
+    for (const int threads : {1, 2}) {
+        ThirdsDriver driver;
+        driver.throw_at_lo = 21;  // 1/3's floor interval
+        BranchOptions options;
+        options.threads = threads;
+        options.progress = [](const BranchProgress&) {};
+        INFO("threads " << threads);
+        CHECK_THROWS_AS(branch_and_bound(driver, {Dyadic{}}, options), std::runtime_error);
+    }
 }
 
 TEST_CASE("branch and bound: shards take the start boxes i mod n, and together cover them once") {
@@ -190,10 +278,10 @@ TEST_CASE("branch and bound: threads give the same leaves and trees as one threa
 
 TEST_CASE("branch and bound: progress is reported from a monitor thread") {
     ThirdsDriver driver;
-    driver.slow = true;  // about 40 boxes of a millisecond each
+    std::atomic<int> calls{0};
+    driver.wait_for_progress = &calls;
     BranchOptions options;
     options.progress_interval = std::chrono::milliseconds(5);
-    std::atomic<int> calls{0};
     std::atomic<long> seen{0};  // the most boxes a progress line saw (no assertion off the main thread)
     options.progress = [&](const BranchProgress& progress) {
         seen = std::max(seen.load(), progress.processed);

@@ -90,8 +90,8 @@ const FamilyProof& family_proof(Family family) {
         {Family::O1, o1_proof<DInterval>, o1_proof<Ball>, nullptr},
         {Family::D14, d14_proof<DInterval>, d14_proof<Ball>, nullptr},
         {Family::S6, s6_proof<DInterval>, s6_proof<Ball>, nullptr},
-        // The insertion's basis is Minkowski's scaled by a root of p (Eq. 10), not exact: its
-        // lattice is certified through the star-lattice-check kind of an exact basis only.
+        // The insertion has no family certificate of its own: its lattice (Minkowski's, exact) is
+        // certified through the star-lattice-check kind, which takes one exact p.
         {Family::MinkowskiInsertion, nullptr, nullptr,
          "--certificate: no certificate kind for the family minkowski-insertion (its basis is not exact); "
          "check-lattice --family minkowski-insertion --certificate certifies its exact basis"},

@@ -103,7 +103,7 @@ struct OverlapDriver {
             result.disjoint = Outcome::refuted;
             result.witness = std::move(leaf.witness);
         }
-        if (leaf.kind != Kind::left || result.disjoint == Outcome::refuted) return;
+        if (leaf.kind != Kind::left) return;
         ++result.remaining_count;
         const I bound = lower_bound_of_both(leaf.box, origin, v, q);
         if (!result.remaining_bound || certainly_less(bound, *result.remaining_bound)) result.remaining_bound = bound;

@@ -1,19 +1,23 @@
 // The one branch-and-bound engine of superpack: a work queue of boxes (of any kind and
 // dimension) that a driver examines one at a time. The driver says only "this box is a leaf"
 // (decided, or given up, with its reason) or "split this box" (after whatever contraction it
-// proved), and how a box splits (Examined below also lets it defer a box or stop the run). The engine keeps the queue (depth first or best first), runs
-// it on N threads, spends a box budget, takes a shard of the start boxes, reports progress,
-// counts the leaves by their reason and, on request, records each start box's proof tree.
+// proved), and how a box splits (Examined below also lets it defer a box or stop the run). The
+// engine keeps the queue (depth first or best first), runs it on N threads, spends a box budget,
+// takes a shard of the start boxes, reports progress, counts the leaves by their reason and, on
+// request, records each start box's proof tree.
 //
 // What a run proves is the driver's: the engine drops no box. Every box it takes from the queue
 // ends as a leaf the driver made (examine or unexamined), is split into children that are
-// queued, or is queued again (deferred); when the run stops early (the budget is spent, or a leaf asked to stop), every box still
-// queued is handed to the driver's `unexamined` and so also ends as a leaf.
+// queued, or is queued again (deferred); when the run stops early (the budget is spent, or the
+// driver stops at a box), every box still queued is handed to the driver's `unexamined` and so
+// also ends as a leaf. Only a leaf that answers the whole run (a witness) drops the boxes still
+// queued. An exception thrown by the driver ends the run the same way on any number of threads
+// and is rethrown to the caller once every thread is done.
 //
 // The driver (a class; with threads > 1, examine, split and priority must be safe to call
 // concurrently, collect is called under the engine's lock):
 //   using Box = ...; using Leaf = ...;
-//   Examined<Box, Leaf> examine(const Box& box, Visit& visit);  the box's leaf, or the box to split
+//   Examined<Box, Leaf> examine(const Box& box, Visit& visit);  the box's leaf, or what to do with it
 //   std::array<Box, 2> split(const Box& box);                    its two children, in the order to visit
 //   Leaf unexamined(const Box& box);                             a box left when the run stopped early
 //   std::size_t reason(const Leaf& leaf);                        the leaf's reason, an index from 0
@@ -27,6 +31,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <mutex>
@@ -66,13 +71,15 @@ struct BranchOptions {
 };
 
 // What the driver says about one box:
-//   leaf     the box ends as this leaf (with `stop`, the run ends after it: the boxes still
-//            queued are left unexamined);
+//   leaf     the box ends as this leaf; with `stop` the leaf answers the whole run (a witness):
+//            the run ends and the boxes still queued are dropped, since nothing they hold can
+//            change the answer;
 //   split    the box (possibly contracted) is split, and its children are queued;
 //   defer    the box goes back into the queue in best-first order under `priority`, after every
 //            box queued depth first: a driver that examines new boxes at once (depth first) and
 //            then takes them by priority (a global minimisation) defers the ones it has bounded;
-//   stop     the run ends before this box: it and every box still queued are left unexamined.
+//   stop     the run ends before this box: it and every box still queued are left unexamined
+//            (handed to `unexamined`, this one first), as when the budget is spent.
 template <class Box, class Leaf>
 struct Examined {
     enum class Action { leaf, split, defer, stop };
@@ -126,8 +133,8 @@ template <class Box>
 struct BranchResult {
     std::vector<long> counts;  // leaves by reason
     long processed = 0;        // boxes taken from the queue
-    long examined = 0;         // of which examined (the others were left when the run stopped)
-    bool stopped = false;      // a leaf asked to stop
+    long examined = 0;         // of which handed to examine (the others were left unexamined)
+    bool stopped = false;      // a leaf answered the run, the driver stopped at a box, or an error
     std::vector<Box> starts;   // this shard's start boxes, in order
     std::vector<std::string> trees;  // with record_trees: each start box's tree, in the same order
 };
@@ -166,6 +173,10 @@ class Open {
     explicit Open(BranchOrder order) : order_(order) {}
     bool empty() const { return stack_.empty() && heap_.empty(); }
     std::size_t size() const { return stack_.size() + heap_.size(); }
+    void clear() {
+        stack_.clear();
+        heap_ = std::priority_queue<Entry<Box>>();
+    }
     std::size_t deferred() const { return heap_.size(); }
     void defer(Entry<Box>&& entry) { heap_.push(std::move(entry)); }
     Entry<Box> pop() {
@@ -233,6 +244,7 @@ class Search {
             for (std::thread& thread : threads) thread.join();
         }
         if (monitor.joinable()) monitor.join();
+        if (error_) std::rethrow_exception(error_);
         result.counts = std::move(counts_);  // (a copy-assignment here trips g++ 12's -Wnonnull)
         result.processed = processed_;
         result.examined = examined_;
@@ -275,21 +287,37 @@ class Search {
                         options_.record_trees ? &letters : nullptr};
             lock.unlock();
             using Action = typename Examined<Box, Leaf>::Action;
-            Examined<Box, Leaf> examined =
-                to_examine ? driver_.examine(taken.box, visit) : leaf_of<Box>(driver_.unexamined(taken.box));
-            if (examined.action == Action::stop) examined.leaf = driver_.unexamined(*examined.box);
+            std::optional<Examined<Box, Leaf>> outcome;
             std::vector<Entry<Box>> children;
-            if (examined.action == Action::split) {
-                std::array<Box, 2> halves = driver_.split(*examined.box);
-                for (int half = 0; half < 2; ++half) {
-                    children.push_back({std::move(halves[half]), taken.place.empty() ? std::string() : taken.place + char('0' + half), 0});
-                    children.back().priority = priority(children.back().box);
+            try {
+                outcome = to_examine ? driver_.examine(taken.box, visit) : leaf_of<Box>(driver_.unexamined(taken.box));
+                if (outcome->action == Action::stop) outcome->leaf = driver_.unexamined(*outcome->box);
+                if (outcome->action == Action::defer && options_.record_trees)
+                    throw std::logic_error("branch and bound: a deferred box has no place in a recorded tree");
+                if (outcome->action == Action::split) {
+                    std::array<Box, 2> halves = driver_.split(*outcome->box);
+                    for (int half = 0; half < 2; ++half) {
+                        children.push_back({std::move(halves[half]), taken.place.empty() ? std::string() : taken.place + char('0' + half), 0});
+                        children.back().priority = priority(children.back().box);
+                    }
                 }
+            } catch (...) {
+                // The run ends: the first error is rethrown by run() once every thread is done.
+                lock.lock();
+                if (!error_) error_ = std::current_exception();
+                stopped_ = true;
+                open_.clear();
+                --active_;
+                wake_.notify_all();
+                continue;
             }
+            Examined<Box, Leaf>& examined = *outcome;
             lock.lock();
-            if (options_.record_trees && examined.action != Action::defer) records_.emplace_back(taken.place, std::move(letters));
+            if (options_.record_trees) records_.emplace_back(taken.place, std::move(letters));
             --active_;
-            if (examined.action == Action::split) {
+            if (answered_ || error_) {
+                // The run is answered (another thread's leaf) or failed: this box and its children are dropped.
+            } else if (examined.action == Action::split) {
                 open_.push(children);
             } else if (examined.action == Action::defer) {
                 open_.defer({std::move(*examined.box), std::move(taken.place), examined.priority});
@@ -299,6 +327,10 @@ class Search {
                 ++counts_[reason];
                 ++closed_;
                 if (examined.stop || examined.action == Action::stop) stopped_ = true;
+                if (examined.stop) {
+                    answered_ = true;
+                    open_.clear();
+                }
                 driver_.collect(std::move(*examined.leaf));
             }
             wake_.notify_all();
@@ -326,7 +358,8 @@ class Search {
     long processed_ = 0, examined_ = 0;
     std::size_t closed_ = 0;
     int active_ = 0;
-    bool stopped_ = false, finished_ = false;
+    bool stopped_ = false, answered_ = false, finished_ = false;
+    std::exception_ptr error_;
     std::chrono::steady_clock::time_point begin_;
 };
 

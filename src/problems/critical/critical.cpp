@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "critical_box.hpp"
 #include "superpack/geometry/superball.hpp"
@@ -139,10 +140,12 @@ struct CriticalDriver {
     }
 };
 
+// A count under an index that is no BoxReason would vanish from the undecided ones, so it is a bug.
 template <class Counts>
 std::array<long, box_reasons> reason_counts(const Counts& counts) {
+    if (counts.size() > static_cast<std::size_t>(box_reasons)) throw std::logic_error("critical: a leaf's reason is no BoxReason");
     std::array<long, box_reasons> by_reason{};
-    for (std::size_t r = 0; r < counts.size() && r < by_reason.size(); ++r) by_reason[r] = counts[r];
+    for (std::size_t r = 0; r < counts.size(); ++r) by_reason[r] = counts[r];
     return by_reason;
 }
 
