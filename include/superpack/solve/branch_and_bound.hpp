@@ -286,55 +286,79 @@ class Search {
             Visit visit{static_cast<long>(closed_), static_cast<long>(open_.size()), static_cast<long>(open_.deferred()),
                         options_.record_trees ? &letters : nullptr};
             lock.unlock();
-            using Action = typename Examined<Box, Leaf>::Action;
-            std::optional<Examined<Box, Leaf>> outcome;
+            std::optional<Examined<Box, Leaf>> examined;
             std::vector<Entry<Box>> children;
             try {
-                outcome = to_examine ? driver_.examine(taken.box, visit) : leaf_of<Box>(driver_.unexamined(taken.box));
-                if (outcome->action == Action::stop) outcome->leaf = driver_.unexamined(*outcome->box);
-                if (outcome->action == Action::defer && options_.record_trees)
-                    throw std::logic_error("branch and bound: a deferred box has no place in a recorded tree");
-                if (outcome->action == Action::split) {
-                    std::array<Box, 2> halves = driver_.split(*outcome->box);
-                    for (int half = 0; half < 2; ++half) {
-                        children.push_back({std::move(halves[half]), taken.place.empty() ? std::string() : taken.place + char('0' + half), 0});
-                        children.back().priority = priority(children.back().box);
-                    }
-                }
+                examined = decide(taken, to_examine, visit, children);
             } catch (...) {
-                // The run ends: the first error is rethrown by run() once every thread is done.
                 lock.lock();
-                if (!error_) error_ = std::current_exception();
-                stopped_ = true;
-                open_.clear();
-                --active_;
-                wake_.notify_all();
+                fail(std::current_exception());
                 continue;
             }
-            Examined<Box, Leaf>& examined = *outcome;
             lock.lock();
             if (options_.record_trees) records_.emplace_back(taken.place, std::move(letters));
-            --active_;
-            if (answered_ || error_) {
-                // The run is answered (another thread's leaf) or failed: this box and its children are dropped.
-            } else if (examined.action == Action::split) {
-                open_.push(children);
-            } else if (examined.action == Action::defer) {
-                open_.defer({std::move(*examined.box), std::move(taken.place), examined.priority});
-            } else {
-                const std::size_t reason = driver_.reason(*examined.leaf);
-                if (reason >= counts_.size()) counts_.resize(reason + 1, 0);
-                ++counts_[reason];
-                ++closed_;
-                if (examined.stop || examined.action == Action::stop) stopped_ = true;
-                if (examined.stop) {
-                    answered_ = true;
-                    open_.clear();
-                }
-                driver_.collect(std::move(*examined.leaf));
+            try {
+                settle(taken, *examined, children);
+            } catch (...) {
+                fail(std::current_exception());
+                continue;
             }
+            --active_;
             wake_.notify_all();
         }
+    }
+
+    // What becomes of a box taken from the queue, outside the lock: the driver's answer and, for
+    // a split, the children with their places and priorities.
+    Examined<Box, Leaf> decide(const Entry<Box>& taken, bool to_examine, Visit& visit, std::vector<Entry<Box>>& children) {
+        using Action = typename Examined<Box, Leaf>::Action;
+        Examined<Box, Leaf> examined = to_examine ? driver_.examine(taken.box, visit) : leaf_of<Box>(driver_.unexamined(taken.box));
+        if (examined.action == Action::stop) examined.leaf = driver_.unexamined(*examined.box);
+        if (examined.action == Action::defer && options_.record_trees)
+            throw std::logic_error("branch and bound: a deferred box has no place in a recorded tree");
+        if (examined.action == Action::split) {
+            std::array<Box, 2> halves = driver_.split(*examined.box);
+            for (int half = 0; half < 2; ++half) {
+                children.push_back({std::move(halves[half]), taken.place.empty() ? std::string() : taken.place + char('0' + half), 0});
+                children.back().priority = priority(children.back().box);
+            }
+        }
+        return examined;
+    }
+
+    // Under the lock: the children queued, the box deferred, or the leaf counted and collected.
+    // Once the run is answered (a leaf of another thread) or failed, the box is dropped.
+    void settle(Entry<Box>& taken, Examined<Box, Leaf>& examined, std::vector<Entry<Box>>& children) {
+        using Action = typename Examined<Box, Leaf>::Action;
+        if (answered_ || error_) return;
+        if (examined.action == Action::split) {
+            open_.push(children);
+            return;
+        }
+        if (examined.action == Action::defer) {
+            open_.defer({std::move(*examined.box), std::move(taken.place), examined.priority});
+            return;
+        }
+        const std::size_t reason = driver_.reason(*examined.leaf);
+        if (reason >= counts_.size()) counts_.resize(reason + 1, 0);
+        ++counts_[reason];
+        ++closed_;
+        if (examined.stop || examined.action == Action::stop) stopped_ = true;
+        if (examined.stop) {
+            answered_ = true;
+            open_.clear();
+        }
+        driver_.collect(std::move(*examined.leaf));
+    }
+
+    // Under the lock: the run ends, and the first error is rethrown by run() once every thread
+    // is done.
+    void fail(std::exception_ptr error) {
+        if (!error_) error_ = error;
+        stopped_ = true;
+        open_.clear();
+        --active_;
+        wake_.notify_all();
     }
 
     void report_progress() {
