@@ -27,7 +27,7 @@ using superpack::test::Scratch;
 using Vector = std::array<double, 3>;
 
 const std::string quick = "simulate --n 2 --steps 200 --p ";
-// The OBJ's grid, src/cli/packing_mesh.hpp's default_mesh_resolution (stated in --help).
+// The OBJ's grid, include/superpack/render/packing_mesh.hpp's default_mesh_resolution (stated in --help).
 constexpr long grid = 24;
 
 std::string contents(const std::string& path) {

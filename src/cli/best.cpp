@@ -7,7 +7,6 @@
 #include <memory>
 
 #include "common.hpp"
-#include "plot.hpp"
 #include "superpack/arith/decimal.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/certificate.hpp"
@@ -15,6 +14,7 @@
 #include "superpack/cert/local_optimum_certificate.hpp"
 #include "superpack/cert/star_lattice_certificate.hpp"
 #include "superpack/problems/best/best.hpp"
+#include "superpack/render/plot.hpp"
 
 namespace superpack::cli {
 

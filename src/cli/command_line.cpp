@@ -8,6 +8,7 @@
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/certificate.hpp"
 #include "superpack/cert/version.hpp"
+#include "superpack/render/render_error.hpp"
 
 namespace superpack::cli {
 
@@ -76,6 +77,8 @@ CommandOutcome run_command_line(int argc, char** argv) {
         fail(exit_usage, file_error.what());
     } catch (const std::filesystem::filesystem_error& file_error) {
         fail(exit_usage, file_error.what());
+    } catch (const RenderError& render_error) {
+        fail(exit_usage, render_error.what());
     } catch (const CertificateRejected& rejected) {
         fail(exit_invalid, std::string("no certificate written: ") + rejected.what());
     } catch (const Failure& failure) {

@@ -1,11 +1,11 @@
 #include "final_packing.hpp"
 
-#include "packing_files.hpp"
-#include "packing_mesh.hpp"
-#include "packing_picture.hpp"
-#include "plot.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/periodic_certificate.hpp"
+#include "superpack/render/packing_files.hpp"
+#include "superpack/render/packing_mesh.hpp"
+#include "superpack/render/packing_picture.hpp"
+#include "superpack/render/plot.hpp"
 #include "superpack/sim/overlap.hpp"
 
 namespace superpack::cli {

@@ -1,9 +1,9 @@
-#include "packing_files.hpp"
+#include "superpack/render/packing_files.hpp"
 
 #include <cmath>
 #include <sstream>
 
-namespace superpack::cli {
+namespace superpack {
 
 std::string extended_xyz(const PeriodicPacking& packing, const std::string& comment) {
     std::ostringstream out;
@@ -25,4 +25,4 @@ std::string extended_xyz(const PeriodicPacking& packing, const std::string& comm
     return out.str();
 }
 
-}  // namespace superpack::cli
+}  // namespace superpack

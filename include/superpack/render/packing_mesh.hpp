@@ -15,7 +15,7 @@
 #include "superpack/problems/periodic/periodic_packing.hpp"
 #include "superpack/sim/vector3.hpp"
 
-namespace superpack::cli {
+namespace superpack {
 
 using Point3 = sim::Vector3;
 
@@ -55,4 +55,4 @@ PlacedParticle placed_particle(const PeriodicPacking& packing, std::size_t i);
 // cell an object "particle_<i>" with its 6 m^2 + 2 vertices and its 12 m^2 faces.
 std::string packing_obj(const PeriodicPacking& packing, const std::string& comment, int m = default_mesh_resolution);
 
-}  // namespace superpack::cli
+}  // namespace superpack

@@ -1,13 +1,13 @@
-#include "packing_picture.hpp"
+#include "superpack/render/packing_picture.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "gnuplot.hpp"
-#include "packing_mesh.hpp"
 #include "superpack/arith/decimal.hpp"
+#include "superpack/render/packing_mesh.hpp"
 
-namespace superpack::cli {
+namespace superpack {
 
 namespace {
 
@@ -249,4 +249,4 @@ void packing_png(const std::string& path, const PeriodicPacking& packing, const 
     gnuplot::write_png(path, [&](const std::string& output) { return script(output, packing, phi); });
 }
 
-}  // namespace superpack::cli
+}  // namespace superpack

@@ -1,12 +1,12 @@
-#include "plot.hpp"
+#include "superpack/render/plot.hpp"
 
 #include <algorithm>
 
-#include "common.hpp"
 #include "gnuplot.hpp"
 #include "superpack/cert/atomic_file.hpp"
+#include "superpack/render/render_error.hpp"
 
-namespace superpack::cli {
+namespace superpack {
 
 namespace {
 
@@ -54,7 +54,7 @@ std::string script(const std::string& output, const PlotAxes& axes, const std::v
         text += datablock(name, series[k]);
         plots += (plots.empty() ? "plot " : ", ") + name + " using 1:2 " + style(series[k]) + " title " + quoted(series[k].title);
     }
-    if (plots.empty()) throw Failure(exit_usage, "cannot plot: no series has a point");
+    if (plots.empty()) throw RenderError("cannot plot: no series has a point");
     text += "set terminal pngcairo noenhanced size " + std::to_string(width_pixels) + "," + std::to_string(height_pixels) + "\n";
     text += "set output " + quoted(output_path(output)) + "\n";
     text += "set title " + quoted(axes.title) + "\n";
@@ -79,4 +79,4 @@ void plot_png(const std::string& path, const PlotAxes& axes, const std::vector<P
     gnuplot::write_png(path, [&](const std::string& output) { return script(output, axes, series); });
 }
 
-}  // namespace superpack::cli
+}  // namespace superpack

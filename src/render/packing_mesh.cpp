@@ -1,4 +1,4 @@
-#include "packing_mesh.hpp"
+#include "superpack/render/packing_mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace superpack::cli {
+namespace superpack {
 
 using sim::operator+;
 using sim::operator*;
@@ -116,4 +116,4 @@ std::string packing_obj(const PeriodicPacking& packing, const std::string& comme
     return out.str();
 }
 
-}  // namespace superpack::cli
+}  // namespace superpack

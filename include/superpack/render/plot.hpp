@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace superpack::cli {
+namespace superpack {
 
 // A point of a curve; a point without y breaks the curve there.
 struct PlotPoint {
@@ -35,11 +35,11 @@ struct PlotAxes {
 
 // Before the slow work that makes the data: throws FileError unless `path` can be written
 // (require_writable_target; a name with a line break is refused too, gnuplot could not be
-// given it), and Failure (exit 2) unless gnuplot runs here with the pngcairo terminal.
+// given it), and RenderError unless gnuplot runs here with the pngcairo terminal.
 void require_plottable(const std::string& path);
 
-// Draws the series that have a point (at least one must) into the PNG `path`; throws Failure
-// (exit 2) naming the problem when gnuplot fails or writes no PNG, and leaves no file then.
+// Draws the series that have a point (at least one must) into the PNG `path`; throws
+// RenderError naming the problem when gnuplot fails or writes no PNG, and leaves no file then.
 void plot_png(const std::string& path, const PlotAxes& axes, const std::vector<PlotSeries>& series);
 
-}  // namespace superpack::cli
+}  // namespace superpack

@@ -3,15 +3,15 @@
 // a failure; a gnuplot that neither reads nor exits within a time limit is killed. The PNG it
 // draws is written like every result file (cert/atomic_file.hpp): into an exclusive temporary
 // file beside the target, checked to be a PNG, then renamed over it. Users: plot.cpp (curves)
-// and packing_picture.cpp (3-D packings).
+// and packing_picture.cpp (3-D packings). Every failure is a RenderError (render_error.hpp).
 #pragma once
 #include <functional>
 #include <string>
 
-namespace superpack::cli::gnuplot {
+namespace superpack::gnuplot {
 
 // A gnuplot single-quoted string: nothing is special inside but the quote, written twice. A
-// line break would end the command: Failure (exit 2).
+// line break would end the command: RenderError.
 std::string quoted(const std::string& text);
 
 // `path` as gnuplot's `set output` must be given it: gnuplot reads "~..." as the home
@@ -22,14 +22,14 @@ std::string output_path(const std::string& path);
 std::string number(double value, int digits = 12);
 
 // Runs gnuplot with `script` on its stdin; returns only when it exited 0 having read all of
-// it, and throws Failure (exit 2) naming the problem otherwise (not found, failed with its last
+// it, and throws RenderError naming the problem otherwise (not found, failed with its last
 // message line, killed, stopped after the time limit).
 void run(const std::string& script);
 
 // Writes the PNG `path` atomically: `script_for(output)` is a script that draws into the file
 // `output` (a fresh temporary beside `path`; the script sets the terminal and output itself,
-// with output_path); throws Failure (exit 2) when gnuplot fails or writes no PNG, and then
+// with output_path); throws RenderError when gnuplot fails or writes no PNG, and then
 // leaves `path` as it was and no temporary.
 void write_png(const std::string& path, const std::function<std::string(const std::string& output)>& script_for);
 
-}  // namespace superpack::cli::gnuplot
+}  // namespace superpack::gnuplot

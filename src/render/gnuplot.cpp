@@ -16,12 +16,12 @@
 #include <sstream>
 #include <thread>
 
-#include "common.hpp"
 #include "superpack/cert/atomic_file.hpp"
+#include "superpack/render/render_error.hpp"
 
 extern char** environ;
 
-namespace superpack::cli::gnuplot {
+namespace superpack::gnuplot {
 
 namespace {
 
@@ -83,13 +83,12 @@ int wait_for(pid_t child, std::chrono::steady_clock::time_point deadline) {
     for (;;) {
         const pid_t waited = waitpid(child, &status, WNOHANG);
         if (waited == child) return status;
-        if (waited < 0 && errno != EINTR) throw Failure(exit_usage, "cannot wait for gnuplot: " + system_error_text());
+        if (waited < 0 && errno != EINTR) throw RenderError("cannot wait for gnuplot: " + system_error_text());
         if (std::chrono::steady_clock::now() >= deadline) {
             kill(child, SIGKILL);
             while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
             }
-            throw Failure(exit_usage,
-                          "gnuplot did not finish within " + std::to_string(gnuplot_time_limit.count()) + " s and was stopped");
+            throw RenderError("gnuplot did not finish within " + std::to_string(gnuplot_time_limit.count()) + " s and was stopped");
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
@@ -121,7 +120,7 @@ bool starts_as_png(const std::string& path) {
 
 std::string quoted(const std::string& text) {
     if (text.find_first_of("\n\r") != std::string::npos)
-        throw Failure(exit_usage, "cannot plot: '" + text + "' holds a line break");
+        throw RenderError("cannot plot: '" + text + "' holds a line break");
     std::string result = "'";
     for (char c : text) result += c == '\'' ? std::string("''") : std::string(1, c);
     return result + "'";
@@ -141,9 +140,9 @@ std::string number(double value, int digits) {
 // its stderr kept for the message; returns only when it exited 0.
 void run(const std::string& text) {
     const std::unique_ptr<FILE, int (*)(FILE*)> errors(std::tmpfile(), &std::fclose);
-    if (!errors) throw Failure(exit_usage, "cannot run gnuplot: no temporary file for its messages: " + system_error_text());
+    if (!errors) throw RenderError("cannot run gnuplot: no temporary file for its messages: " + system_error_text());
     int ends[2];
-    if (pipe2(ends, O_CLOEXEC) != 0) throw Failure(exit_usage, "cannot run gnuplot: " + system_error_text());
+    if (pipe2(ends, O_CLOEXEC) != 0) throw RenderError("cannot run gnuplot: " + system_error_text());
     Descriptor read_end{ends[0]}, write_end{ends[1]};
     fcntl(write_end.value, F_SETFL, fcntl(write_end.value, F_GETFL) | O_NONBLOCK);
 
@@ -166,8 +165,8 @@ void run(const std::string& text) {
     const int spawned = posix_spawnp(&child, name, &actions, &attributes, arguments, environ);
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attributes);
-    if (spawned == ENOENT) throw Failure(exit_usage, "gnuplot not found: install gnuplot-nox (make deps)");
-    if (spawned != 0) throw Failure(exit_usage, std::string("cannot run gnuplot: ") + std::strerror(spawned));
+    if (spawned == ENOENT) throw RenderError("gnuplot not found: install gnuplot-nox (make deps)");
+    if (spawned != 0) throw RenderError(std::string("cannot run gnuplot: ") + std::strerror(spawned));
     read_end.reset();
 
     const auto deadline = std::chrono::steady_clock::now() + gnuplot_time_limit;
@@ -176,19 +175,19 @@ void run(const std::string& text) {
     const int status = wait_for(child, deadline);
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
         if (fed) return;
-        throw Failure(exit_usage, "gnuplot stopped reading its script before the end");
+        throw RenderError("gnuplot stopped reading its script before the end");
     }
     const std::string message = last_line(errors.get());
     const std::string how = WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
                                               : "killed by signal " + std::to_string(WTERMSIG(status));
-    throw Failure(exit_usage, "gnuplot failed (" + how + ")" + (message.empty() ? "" : ": " + message));
+    throw RenderError("gnuplot failed (" + how + ")" + (message.empty() ? "" : ": " + message));
 }
 
 void write_png(const std::string& path, const std::function<std::string(const std::string& output)>& script_for) {
     write_atomically_by(path, [&](const std::string& temporary) {
         run(script_for(temporary));
-        if (!starts_as_png(temporary)) throw Failure(exit_usage, "gnuplot wrote no PNG for '" + path + "'");
+        if (!starts_as_png(temporary)) throw RenderError("gnuplot wrote no PNG for '" + path + "'");
     });
 }
 
-}  // namespace superpack::cli::gnuplot
+}  // namespace superpack::gnuplot
