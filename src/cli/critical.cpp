@@ -9,9 +9,9 @@
 #include <memory>
 
 #include "common.hpp"
-#include "critical_merge.hpp"
 #include "superpack/arith/enclosure_json.hpp"
 #include "superpack/cert/critical_certificate.hpp"
+#include "superpack/cert/critical_shards.hpp"
 #include "superpack/problems/critical/critical.hpp"
 
 namespace superpack::cli {

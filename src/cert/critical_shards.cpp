@@ -1,4 +1,4 @@
-#include "critical_merge.hpp"
+#include "superpack/cert/critical_shards.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <memory>
 
-namespace superpack::cli {
+namespace superpack {
 
 namespace {
 
@@ -120,4 +120,4 @@ CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::st
     return parts;
 }
 
-}  // namespace superpack::cli
+}  // namespace superpack

@@ -1,5 +1,6 @@
-// Reading back the JSON documents of `superpack critical --shard i/n --json` for --merge, and the
-// shards' certificates for --cover.
+// Reading back what shards of `superpack critical` wrote: their JSON documents (--shard i/n
+// --json) for --merge, and their critical-lattice certificates for --cover. Beside the
+// certificate writers, whose documents these are; the command only parses and prints.
 #pragma once
 #include <string>
 #include <vector>
@@ -8,7 +9,7 @@
 #include "superpack/cert/critical_certificate.hpp"
 #include "superpack/problems/critical/critical.hpp"
 
-namespace superpack::cli {
+namespace superpack {
 
 // A shard document's fields that a merge compares and sums. InputError names the file and the
 // field when the file is unreadable, too large, not a regular file, or not a critical document.
@@ -29,4 +30,4 @@ constexpr long max_shard_bytes = 1 << 20;
 // otherwise; whether the boxes tile the domain is the checker's to prove.
 CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::string& cover, int split);
 
-}  // namespace superpack::cli
+}  // namespace superpack
