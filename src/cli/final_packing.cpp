@@ -12,27 +12,6 @@ namespace superpack::cli {
 
 namespace {
 
-constexpr int cell_bits = 40, quaternion_bits = 30;
-
-PeriodicPacking exact_packing(const Rational& p, const sim::PeriodicConfiguration& state) {
-    PeriodicPacking packing;
-    packing.p = p;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) packing.cell[i][j] = dyadic_near(state.cell[i][j], cell_bits);
-    for (std::size_t n = 0; n < state.size(); ++n) {
-        RationalVector3 center;
-        std::array<Rational, 3> fraction;
-        for (int c = 0; c < 3; ++c) fraction[c] = dyadic_near(state.fractional[n][c], cell_bits);
-        for (int c = 0; c < 3; ++c)
-            center[c] = fraction[0] * packing.cell[0][c] + fraction[1] * packing.cell[1][c] + fraction[2] * packing.cell[2][c];
-        packing.centers.push_back(center);
-        const sim::Quaternion& q = state.orientations[n];
-        packing.quaternions.push_back({dyadic_near(q.w, quaternion_bits), dyadic_near(q.x, quaternion_bits),
-                                       dyadic_near(q.y, quaternion_bits), dyadic_near(q.z, quaternion_bits)});
-    }
-    return packing;
-}
-
 std::string bracketed(const DInterval& x) {
     const DecimalEnclosure d = to_decimal(x, 17);
     return "[" + d.lo + ", " + d.hi + "]";
@@ -74,14 +53,21 @@ sim::PeriodicConfiguration lattice_start(const Basis<DInterval>& basis, int part
     return sim::lattice_configuration(rows, particles, expansion);
 }
 
-PeriodicCertificate<DInterval> prove_end_state(const Rational& p, const sim::SuperballShape& shape, const sim::PeriodicConfiguration& end) {
-    const NormalGuess guess = [&](std::size_t first, std::size_t second, const std::array<double, 3>& difference) {
+SimulationEndState simulation_end_state(const sim::PeriodicConfiguration& end) {
+    SimulationEndState state;
+    state.cell = end.cell;
+    state.fractional = end.fractional;
+    for (const sim::Quaternion& q : end.orientations) state.quaternions.push_back({q.w, q.x, q.y, q.z});
+    return state;
+}
+
+NormalGuess separation_guess(const sim::SuperballShape& shape, const sim::PeriodicConfiguration& end) {
+    return [&shape, &end](std::size_t first, std::size_t second, const std::array<double, 3>& difference) {
         const sim::Placement a{{0, 0, 0}, sim::rotation_matrix(end.orientations[first])};
         const sim::Placement b{difference, sim::rotation_matrix(end.orientations[second])};
         // Also for a pair GJK calls touching: its best plane is near the contact normal.
         return sim::separation(shape, a, b).normal;
     };
-    return certify_periodic_packing(exact_packing(p, end), guess, DoubleField{});
 }
 
 void add_proof_json(Json& document, const PeriodicCertificate<DInterval>& proof, const BestLattice<DInterval>& best) {

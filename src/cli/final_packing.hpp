@@ -1,6 +1,7 @@
-// What `simulate` and `md` do with a simulation's end state: round it to exact rationals, prove
-// it a packing (problems/periodic/periodic_packing.hpp, with sim's separating planes as guesses), compare
-// it with the best lattice superpack certifies at p, and write it to the files people open.
+// What `simulate` and `md` do with a simulation's end state: hand it to problems/ to be rounded
+// to exact rationals and proved a packing (problems/periodic/end_state.hpp, with sim's separating
+// planes as guesses), compare it with the best lattice superpack certifies at p, and write it to
+// the files people open (render/).
 // Floating point guesses, intervals prove: a bad guess costs density, never soundness.
 #pragma once
 #include <CLI/CLI.hpp>
@@ -8,7 +9,7 @@
 
 #include "common.hpp"
 #include "superpack/problems/best/best.hpp"
-#include "superpack/problems/periodic/periodic_packing.hpp"
+#include "superpack/problems/periodic/end_state.hpp"
 #include "superpack/sim/periodic_configuration.hpp"
 
 namespace superpack::cli {
@@ -29,9 +30,11 @@ BestLattice<DInterval> reference_lattice(const Rational& p, const std::string& c
 // `particles` bodies: the supercell of sim::lattice_configuration, every length times `expansion`.
 sim::PeriodicConfiguration lattice_start(const Basis<DInterval>& basis, int particles, double expansion);
 
-// The end state rounded (cell entries and fractional coordinates to multiples of 2^-40,
-// quaternion components to 2^-30: any nonzero rational quaternion is a rotation) and proved.
-PeriodicCertificate<DInterval> prove_end_state(const Rational& p, const sim::SuperballShape& shape, const sim::PeriodicConfiguration& end);
+// The end state as the plain numbers prove_end_state takes.
+SimulationEndState simulation_end_state(const sim::PeriodicConfiguration& end);
+// sim's separating planes (GJK) as the guesses of the end state's proof; it refers to `shape` and
+// `end`, which must outlive it.
+NormalGuess separation_guess(const sim::SuperballShape& shape, const sim::PeriodicConfiguration& end);
 
 // The proof's keys of the JSON document: certified, reason, best_lattice, and when certified phi,
 // ratio_to_best_lattice, scale, pairs_separated and the exact configuration.

@@ -174,7 +174,8 @@ int run(const MdOptions& options) {
     const sim::EventMdResult run = run_dynamics(shape, start, run_options, seconds);
 
     std::cerr << "md: proving the final packing\n";
-    const PeriodicCertificate<DInterval> proof = prove_end_state(p, shape, run.configuration);
+    const PeriodicCertificate<DInterval> proof =
+        prove_end_state(p, simulation_end_state(run.configuration), separation_guess(shape, run.configuration));
     const bool certified = proof.status == Outcome::proved;
 
     Json document = header_json("md", field, 15);

@@ -129,7 +129,8 @@ int run(const SimulateOptions& options) {
 
     // The proof: exact rounding, a separating plane per close pair (sim's guess), scaled if needed.
     std::cerr << "simulate: proving the final packing\n";
-    const PeriodicCertificate<DInterval> proof = prove_end_state(p, shape, run.configuration);
+    const PeriodicCertificate<DInterval> proof =
+        prove_end_state(p, simulation_end_state(run.configuration), separation_guess(shape, run.configuration));
     const bool certified = proof.status == Outcome::proved;
 
     Json document = header_json("simulate", field, 15);
