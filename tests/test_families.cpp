@@ -1,3 +1,4 @@
+#include "superpack/arith/contract.hpp"
 #include "support.hpp"
 
 using namespace superpack;
@@ -100,4 +101,16 @@ TEST_CASE("C0 and C1 at p = 150, 10^4 and 10^6: certified in both backends, the 
             CHECK(width_upper(low.parameters[0].value) <= std::ldexp(mid_double(low.parameters[0].value), -44));
             CHECK(width_upper(high.parameters[0].value) <= std::ldexp(mid_double(high.parameters[0].value), -95));
         }
+}
+
+// density, check-lattice and best call enclose_family through within_contract: at a legal p whose
+// binary64 enclosure touches 1/2 a power's contract refuses, and the driver's answer is the
+// undecided value with the refusal's words (the command prints them, exit 4), not an exception.
+TEST_CASE("a driver whose contract refuses an enclosure answers undecided as a value") {
+    const Rational p = parse_rational("0.5000000000000000001");
+    Contracted<FamilyLattice<DInterval>> lattice;
+    REQUIRE_NOTHROW(lattice = within_contract([&] { return enclose_family(Family::O0, p, DoubleField{}); }));
+    CHECK(lattice.status == ContractStatus::too_wide);
+    CHECK(!lattice.value);
+    CHECK(!lattice.refusal.empty());
 }

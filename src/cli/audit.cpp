@@ -52,14 +52,15 @@ std::string range_text(const AuditPiece& piece) {
 
 // Writes nothing unless some piece has a certified verdict (exit 4), and nothing half-written (atomic).
 void write_audit_certificate(const std::string& path, const AuditResult& result) {
-    Json certificate;
+    Contracted<Json> built;
     try {
-        certificate = audit_certificate(result);
+        built = within_contract([&] { return audit_certificate(result); });
     } catch (const InputError& error) {
         throw Failure(exit_usage, std::string("audit: no certificate written: ") + error.what());
     } catch (const std::runtime_error& error) {
         throw Failure(exit_undecided, std::string("audit: no certificate written: ") + error.what());
     }
+    const Json certificate = decided(std::move(built), DoubleField{}, 0, 0);  // the audit has no --digits
     try {
         write_certificate(path, certificate);
     } catch (const std::runtime_error& error) {
@@ -141,9 +142,13 @@ int run(const AuditOptions& options, bool default_directory) {
         if (options.pieces > 0) settings.initial_pieces = options.pieces;
         if (options.depth >= 0) settings.max_depth = options.depth;
         const auto start = std::chrono::steady_clock::now();
-        const AuditResult result = audit_family(family, range, settings,
-                                                options.second_root ? AuditBranch::o1_second_root : AuditBranch::published,
-                                                [](const std::string& line) { std::cerr << "audit: " << line << "\n"; });
+        // Binary64 pieces, and the audit has no --digits.
+        const AuditResult result = decided(within_contract([&] {
+                                               return audit_family(family, range, settings,
+                                                                   options.second_root ? AuditBranch::o1_second_root : AuditBranch::published,
+                                                                   [](const std::string& line) { std::cerr << "audit: " << line << "\n"; });
+                                           }),
+                                           DoubleField{}, 0, 0);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const std::string file = audit_file(options, family);
         undecided_pieces += std::count_if(result.pieces.begin(), result.pieces.end(), undecided);

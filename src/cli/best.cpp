@@ -300,7 +300,8 @@ int run_scan(const BestCommandOptions& options) {
         std::size_t done = 0;
         for (const Rational& p : values) {
             std::cerr << "best scan: p = " << decimal_or_fraction_text(p) << " (" << ++done << "/" << values.size() << ")\n";
-            const BestLattice<I> best = find_best_lattice(p, field, best_options);
+            const BestLattice<I> best =
+                decided(within_contract([&] { return find_best_lattice(p, field, best_options); }), field, digits, max_digits);
             if (options.csv)
                 print_csv_row(p, best, print_digits);
             else
@@ -354,31 +355,26 @@ int run(const BestCommandOptions& options) {
         best_options.search.random_starts = options.starts;
         std::cerr << "best: certifying the families and searching (" << options.starts << " random starts)\n";
         const auto start = std::chrono::steady_clock::now();
-        const BestLattice<I> best = find_best_lattice(p, field, best_options);
+        const BestLattice<I> best =
+            decided(within_contract([&] { return find_best_lattice(p, field, best_options); }), field, digits, max_digits);
         const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         Json document = header_json("best", field, digits);
         document["p"] = options.p;
         document["p_exact"] = rational_text(p);
         document["seed"] = options.seed;
         document.update(best_json(best, total));
-        if (!options.certificate.empty() && best.status == Outcome::proved) {
-            try {
+        if (!options.certificate.empty() && best.status == Outcome::proved)
+            write_certificate_or_fail(options.certificate, field, digits, max_digits, [&] {
                 // A certified local optimum proves admissibility and phi of the critical lattice as
                 // well: it subsumes the lattice check of the best lattice.
                 if (best.local && best.local->verdict == Outcome::proved)
-                    write_certificate(options.certificate, local_optimum_certificate(*best.local, p, field, digits));
-                else if (best.source == BestSource::search)
-                    write_certificate(options.certificate, exact_lattice_certificate(best.checked[best.index].check,
-                                                                                     best.checked[best.index].basis, p, field, digits));
-                else if (best.families[best.index].lattice.family == Family::MinkowskiInsertion)  // Minkowski's exact basis
-                    write_certificate(options.certificate, exact_lattice_certificate(best.families[best.index].check,
-                                                                                     minkowski_octahedron_basis(), p, field, digits));
-                else
-                    write_certificate(options.certificate, family_certificate(best.families[best.index].lattice, p, field, digits));
-            } catch (const std::runtime_error& error) {
-                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
-            }
-        }
+                    return local_optimum_certificate(*best.local, p, field, digits);
+                if (best.source == BestSource::search)
+                    return exact_lattice_certificate(best.checked[best.index].check, best.checked[best.index].basis, p, field, digits);
+                if (best.families[best.index].lattice.family == Family::MinkowskiInsertion)  // Minkowski's exact basis
+                    return exact_lattice_certificate(best.families[best.index].check, minkowski_octahedron_basis(), p, field, digits);
+                return family_certificate(best.families[best.index].lattice, p, field, digits);
+            });
         if (options.json)
             print_json(document);
         else

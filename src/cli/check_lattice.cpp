@@ -1,6 +1,5 @@
 // superpack check-lattice --p P (--basis "a,b,c; d,e,f; g,h,i" | --family F) [--digits D] [--json]
 //                         [--certificate FILE]
-#include <functional>
 #include <memory>
 
 #include "common.hpp"
@@ -63,16 +62,6 @@ void print_table(const LatticeCheck<I>& check, const std::optional<I>& phi, int 
               << ", |c| <= " << check.coefficient_bound[2] << (check.reduction ? "  (in the reduced basis)" : "") << "\n";
 }
 
-// Builds and writes the certificate; a certificate the builder refuses (a candidate its claim
-// kind cannot replay) or a failed write is a usage error with the reason, never an internal one.
-void write_or_fail(const std::string& path, const std::function<Json()>& build) {
-    try {
-        write_certificate(path, build());
-    } catch (const std::runtime_error& error) {
-        throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
-    }
-}
-
 int run(const CheckLatticeOptions& options) {
     if (options.basis.empty() == options.family.empty())
         throw Failure(exit_usage, "check-lattice: give exactly one of --basis and --family");
@@ -97,23 +86,25 @@ int run(const CheckLatticeOptions& options) {
         document["p_exact"] = rational_text(p);
         if (!options.family.empty()) {
             const Family family = parse_family(options.family);
-            const auto lattice = enclose_family(family, p, field);
-            check = check_family_lattice(lattice, p);
+            const auto lattice = decided(within_contract([&] { return enclose_family(family, p, field); }), field, digits, max_digits);
+            check = decided(within_contract([&] { return check_family_lattice(lattice, p); }), field, digits, max_digits);
             phi = lattice.phi;
             document["family"] = to_string(family);
             if (!options.certificate.empty() && check.verdict != Outcome::undecided)
-                write_or_fail(options.certificate, [&] {
+                write_certificate_or_fail(options.certificate, field, digits, max_digits, [&] {
                     return family == Family::MinkowskiInsertion
                                ? exact_lattice_certificate(check, minkowski_octahedron_basis(), p, field, digits)
                                : family_lattice_check_certificate(lattice, check, p, field, digits);
                 });
         } else {
             const Basis<Rational> basis = parse_basis(options.basis);
-            check = check_exact_lattice(basis, p, field);
-            phi = enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field)));
+            check = decided(within_contract([&] { return check_exact_lattice(basis, p, field); }), field, digits, max_digits);
+            phi = decided(within_contract([&] { return enclose_ball_volume(field.rational(p), 3) / abs(determinant(enclose_basis(basis, field))); }),
+                          field, digits, max_digits);
             document["basis"] = options.basis;
             if (!options.certificate.empty() && check.verdict != Outcome::undecided)
-                write_or_fail(options.certificate, [&] { return exact_lattice_certificate(check, basis, p, field, digits); });
+                write_certificate_or_fail(options.certificate, field, digits, max_digits,
+                                          [&] { return exact_lattice_certificate(check, basis, p, field, digits); });
         }
         if (options.json) {
             document.update(lattice_check_json(check, false));

@@ -84,8 +84,9 @@ CommandOutcome run_command_line(int argc, char** argv) {
     } catch (const Failure& failure) {
         fail(failure.code, failure.what());
     } catch (const std::domain_error& domain_error) {
-        // A function's contract refused an enclosure of a legal input outside with_field (the audit's
-        // binary64 pieces): undecided, not a crash.
+        // The last line of defence against a bug: every driver call of a command goes through
+        // within_contract (decided), so no command relies on this; a refusal that escapes one is
+        // still undecided, not a crash.
         fail(exit_undecided, undecided_at_precision(domain_error.what(), 0, 0));
     } catch (const std::bad_alloc&) {
         fail(exit_undecided, "undecided: out of memory");

@@ -2,14 +2,18 @@
 // No mathematics lives in src/cli/: each subcommand parses, calls one driver, prints.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "superpack/arith/contract.hpp"
 #include "superpack/arith/decimal.hpp"
+#include "superpack/cert/certificate.hpp"
 #include "superpack/cert/output_header.hpp"
 #include "superpack/problems/families/family_json.hpp"
 
@@ -46,22 +50,49 @@ std::vector<Rational> parse_scan(const std::string& text, std::size_t max_values
 long parse_digits(const std::string& text, long maximum);
 
 // The message of an answer left undecided because a function's contract refused an
-// enclosure (std::domain_error: too wide at this precision), with the precision to try next
+// enclosure (too wide at this precision), with the precision to try next
 // (digits 0: binary64; maximum_digits 0: the command has no --digits).
 std::string undecided_at_precision(const std::string& what, long digits, long maximum_digits);
 
+// A driver's answer, computed through within_contract: its value when the contracts held, else
+// the undecided exit (4) with the refusal's words. Every driver call of a command goes through
+// it (or write_certificate_or_fail), so that a refusal on a legal input reaches the command as
+// a value, never as an exception.
+// `digits` is what with_field gives its body: with binary64 intervals (DoubleField) that is 15,
+// but the message names binary64 and suggests --digits 30, as for digits 0.
+template <class T, class Field>
+T decided(Contracted<T> answer, const Field&, long digits, long maximum_digits) {
+    const long given_digits = std::is_same<Field, DoubleField>::value ? 0 : digits;
+    if (answer.status == ContractStatus::too_wide)
+        throw Failure(exit_undecided, undecided_at_precision(answer.refusal, given_digits, maximum_digits));
+    return std::move(*answer.value);
+}
+
+// Builds and writes a certificate. A builder that refuses its candidate or a failed write is a
+// usage error with the reason (never an internal one); a contract's refusal while building is
+// undecided, as in decided().
+template <class Field>
+void write_certificate_or_fail(const std::string& path, const Field& field, long digits, long maximum_digits,
+                               const std::function<Json()>& build) {
+    Contracted<bool> written;
+    try {
+        written = within_contract([&] {
+            write_certificate(path, build());
+            return true;
+        });
+    } catch (const std::runtime_error& error) {
+        throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
+    }
+    decided(std::move(written), field, digits, maximum_digits);
+}
+
 // Runs `body(field, digits)` with binary64 intervals when no --digits was given (digits 15)
-// and with Arb balls at bits_for_digits(D) otherwise. A contract refusal of the numerics on a
-// legal input is an undecided answer (exit 4), not an error.
+// and with Arb balls at bits_for_digits(D) otherwise.
 template <class Body>
 int with_field(const std::string& digits_text, long maximum_digits, const Body& body) {
     const long digits = digits_text.empty() ? 0 : parse_digits(digits_text, maximum_digits);
-    try {
-        if (digits == 0) return body(DoubleField{}, 15L);
-        return body(BallField{bits_for_digits(digits)}, digits);
-    } catch (const std::domain_error& error) {
-        throw Failure(exit_undecided, undecided_at_precision(error.what(), digits, maximum_digits));
-    }
+    if (digits == 0) return body(DoubleField{}, 15L);
+    return body(BallField{bits_for_digits(digits)}, digits);
 }
 
 // An enclosure as two CSV fields "lo,hi" (lo rounded down, hi up) to `digits` digits.

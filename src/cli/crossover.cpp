@@ -80,20 +80,23 @@ int run(const CrossoverOptions& options) {
         Json certificate;  // built only for a certified result
         if (options.kind == "cubic") {
             std::cerr << "crossover: proving the sign of phi_C1 - phi_C0 on [1, 10]...\n";
-            const auto crossover = certify_cubic_crossover(field, digits);
+            const auto crossover = decided(within_contract([&] { return certify_cubic_crossover(field, digits); }), field, digits, max_digits);
             document.update(cubic_crossover_json(crossover));
             if (!options.json) print_cubic(crossover, print_digits);
             certified = crossover.certified;
             message = crossover.message;
-            if (certified && !options.certificate.empty()) certificate = cubic_crossover_certificate(crossover, field, digits);
+            if (certified && !options.certificate.empty())
+                certificate = decided(within_contract([&] { return cubic_crossover_certificate(crossover, field, digits); }), field, digits, max_digits);
         } else {
-            const auto crossover = certify_octahedral_crossover(field, digits);
+            const auto crossover =
+                decided(within_contract([&] { return certify_octahedral_crossover(field, digits); }), field, digits, max_digits);
             document.update(octahedral_crossover_json(crossover));
             if (!options.json) print_octahedral(crossover, print_digits);
             certified = crossover.certified;
             message = crossover.message;
             if (certified && !options.certificate.empty())
-                certificate = octahedral_crossover_certificate(crossover, field, digits);
+                certificate =
+                    decided(within_contract([&] { return octahedral_crossover_certificate(crossover, field, digits); }), field, digits, max_digits);
         }
         if (!certificate.is_null()) try {
                 write_certificate(options.certificate, certificate);

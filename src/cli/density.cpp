@@ -80,11 +80,13 @@ int run(const DensityOptions& options) {
     }
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
-        const auto lattice = enclose_family(family, p, field);
+        const auto lattice = decided(within_contract([&] { return enclose_family(family, p, field); }), field, digits, max_digits);
         std::optional<LatticeCheck<I>> check;
-        if (lattice.status == Outcome::proved) check = check_family_lattice(lattice, p);
+        if (lattice.status == Outcome::proved)
+            check = decided(within_contract([&] { return check_family_lattice(lattice, p); }), field, digits, max_digits);
         if (!options.certificate.empty() && lattice.status == Outcome::proved) {
-            const Json certificate = family_certificate(lattice, p, field, digits);
+            const Json certificate =
+                decided(within_contract([&] { return family_certificate(lattice, p, field, digits); }), field, digits, max_digits);
             try {
                 write_certificate(options.certificate, certificate);
             } catch (const std::runtime_error& error) {

@@ -53,7 +53,7 @@ int run(const SlopesOptions& options) {
         require_rounding_self_test();
     }
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
-        const auto slopes = certify_sphere_slopes(field);
+        const auto slopes = decided(within_contract([&] { return certify_sphere_slopes(field); }), field, digits, max_digits);
         if (options.json) {
             Json document = header_json("slopes", field, digits);
             document.update(sphere_slopes_json(slopes));
@@ -62,11 +62,9 @@ int run(const SlopesOptions& options) {
             print_table(slopes, table_digits(digits, !options.digits.empty()));
         }
         if (!slopes.a_minus || !slopes.a_plus) throw Failure(exit_undecided, "slopes: undecided at this precision");
-        if (!options.certificate.empty()) try {
-                write_certificate(options.certificate, sphere_slopes_certificate(slopes, field, digits));
-            } catch (const std::runtime_error& error) {
-                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
-            }
+        if (!options.certificate.empty())
+            write_certificate_or_fail(options.certificate, field, digits, max_digits,
+                                      [&] { return sphere_slopes_certificate(slopes, field, digits); });
         return exit_ok;
     });
 }

@@ -168,7 +168,7 @@ int run_scan(const SuperdiskCliOptions& options) {
         int code = exit_ok;
         std::size_t done = 0;
         for (const Rational& p : values) {
-            const auto report = analyse_superdisk(p, field);
+            const auto report = decided(within_contract([&] { return analyse_superdisk(p, field); }), field, digits, max_digits);
             auto family = [&](const auto& lattice) { return lattice.status == RootStatus::unique ? csv_pair(lattice.phi) : std::string(","); };
             std::cout << decimal_or_fraction_text(p) << "," << family(report.lambda0) << "," << family(report.lambda1) << ","
                       << (report.status == OptimumStatus::certified ? csv_pair(report.optimal_phi) : std::string(","))
@@ -199,10 +199,10 @@ int run(const SuperdiskCliOptions& options) {
     if (!options.certificate.empty()) require_writable_target(options.certificate);
     require_rounding_self_test();
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
-        const auto report = analyse_superdisk(p, field);
+        const auto report = decided(within_contract([&] { return analyse_superdisk(p, field); }), field, digits, max_digits);
         if (p < Rational(1, 2)) {
             std::cerr << "superdisk: p < 1/2, searching lattices of the concave disk\n";
-            const auto lattice = best_star_disk_lattice(p, field);
+            const auto lattice = decided(within_contract([&] { return best_star_disk_lattice(p, field); }), field, digits, max_digits);
             if (options.json) {
                 Json document = header_json("superdisk", field, digits);
                 document["p"] = options.p;
@@ -217,13 +217,9 @@ int run(const SuperdiskCliOptions& options) {
             if (lattice.status != Outcome::proved) throw Failure(exit_undecided, "superdisk: undecided: " + lattice.reason);
             return exit_ok;
         }
-        if (!options.certificate.empty() && report.status == OptimumStatus::certified) {
-            try {
-                write_certificate(options.certificate, superdisk_certificate(report, p, field, digits));
-            } catch (const std::runtime_error& error) {
-                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
-            }
-        }
+        if (!options.certificate.empty() && report.status == OptimumStatus::certified)
+            write_certificate_or_fail(options.certificate, field, digits, max_digits,
+                                      [&] { return superdisk_certificate(report, p, field, digits); });
         if (options.json) {
             Json document = header_json("superdisk", field, digits);
             document["p"] = options.p;

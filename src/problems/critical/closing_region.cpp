@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "superpack/arith/contract.hpp"
 #include "superpack/solve/krawczyk.hpp"
 
 namespace superpack {
@@ -99,7 +100,7 @@ ClosingRegion<I> certify_closing_region(const LocalOptimum<I>& optimum, const I&
         return result;
     }
     double radius = first_radius;
-    try {
+    const Contracted<bool> proved = within_contract([&] {
         for (int attempt = 0; attempt < attempts; ++attempt, radius /= 4) {
             const I widening = from_doubles(field.integer(0), -radius, radius);
             for (int k = 0; k < 3; ++k)
@@ -111,13 +112,13 @@ ClosingRegion<I> certify_closing_region(const LocalOptimum<I>& optimum, const I&
                     result.verdict = Outcome::proved;
                     result.reason = "the augmented Lagrangian's Hessian is positive definite on the whole region (rho = " +
                                     std::to_string(static_cast<long>(rho)) + ")";
-                    return result;
+                    return true;
                 }
         }
-    } catch (const std::domain_error& error) {
-        result.reason = std::string("an enclosure was too wide for a power's contract (") + error.what() + ")";
-        return result;
-    }
+        return false;
+    });
+    if (proved.status == ContractStatus::too_wide) result.reason = proved.reason();
+    if (proved.status == ContractStatus::too_wide || *proved.value) return result;
     result.region = result.center;
     result.reason = "the Hessian was not proved positive definite on a region of radius down to " + std::to_string(radius * 4);
     return result;
