@@ -182,13 +182,6 @@ void print_table(const BestLattice<I>& best, int digits) {
               << best.rejected << " rejected\n";
 }
 
-template <class I>
-const FamilyEntry<I>* family_entry(const BestLattice<I>& best, Family family) {
-    for (const FamilyEntry<I>& entry : best.families)
-        if (entry.lattice.family == family) return &entry;
-    return nullptr;
-}
-
 void print_csv_header() {
     std::cout << "p,best,phi_lo,phi_hi,locally_optimal";
     for (Family family : convex_families_and_insertion())
@@ -365,14 +358,14 @@ int run(const BestCommandOptions& options) {
         document.update(best_json(best, total));
         if (!options.certificate.empty() && best.status == Outcome::proved)
             write_certificate_or_fail(options.certificate, field, digits, max_digits, [&] {
-                // A certified local optimum proves admissibility and phi of the critical lattice as
-                // well: it subsumes the lattice check of the best lattice.
-                if (best.local && best.local->verdict == Outcome::proved)
-                    return local_optimum_certificate(*best.local, p, field, digits);
-                if (best.source == BestSource::search)
-                    return exact_lattice_certificate(best.checked[best.index].check, best.checked[best.index].basis, p, field, digits);
-                if (best.families[best.index].lattice.family == Family::MinkowskiInsertion)  // Minkowski's exact basis
-                    return exact_lattice_certificate(best.families[best.index].check, minkowski_octahedron_basis(), p, field, digits);
+                switch (best_certificate(best)) {
+                    case BestCertificate::local_optimum: return local_optimum_certificate(*best.local, p, field, digits);
+                    case BestCertificate::search_lattice:
+                        return exact_lattice_certificate(best.checked[best.index].check, best.checked[best.index].basis, p, field, digits);
+                    case BestCertificate::insertion_lattice:
+                        return exact_lattice_certificate(best.families[best.index].check, minkowski_octahedron_basis(), p, field, digits);
+                    case BestCertificate::family_lattice: break;
+                }
                 return family_certificate(best.families[best.index].lattice, p, field, digits);
             });
         if (options.json)

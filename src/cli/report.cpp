@@ -7,6 +7,7 @@
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/arith/contract.hpp"
 #include "superpack/arith/decimal.hpp"
+#include "superpack/problems/families/densest_family.hpp"
 #include "superpack/problems/families/family_lattice_check.hpp"
 #include "superpack/problems/families/family_registry.hpp"
 
@@ -32,27 +33,6 @@ std::vector<std::string> split(const std::string& text, char separator) {
     }
     parts.push_back(part);
     return parts;
-}
-
-// Among the lattices certified to be packings: the family whose phi is certainly above every
-// other's, or those that cannot be separated from the best (joined by '='), or "none".
-template <class I>
-std::string densest(const std::vector<FamilyLattice<I>>& lattices, const std::vector<Outcome>& verdicts) {
-    std::vector<const FamilyLattice<I>*> certified;
-    for (std::size_t k = 0; k < lattices.size(); ++k)
-        if (lattices[k].phi && verdicts[k] == Outcome::proved) certified.push_back(&lattices[k]);
-    if (certified.empty()) return "none";
-    const FamilyLattice<I>* leader = certified.front();
-    for (const auto* lattice : certified)
-        if (mid_double(*lattice->phi) > mid_double(*leader->phi)) leader = lattice;
-    std::string names = to_string(leader->family);
-    bool alone = true;
-    for (const auto* lattice : certified)
-        if (lattice != leader && !certainly_less(*lattice->phi, *leader->phi)) {
-            names += std::string("=") + to_string(lattice->family);
-            alone = false;
-        }
-    return alone ? names : names + " (not separated)";
 }
 
 // Measured (README): the whole report at 1000 digits takes about 16 s.
@@ -127,7 +107,7 @@ int run(const ReportOptions& options, bool default_output) {
                 line.push_back(cell.text);
                 if (cell.undecided) ++undecided;
             }
-            row["densest"] = densest(lattices, verdicts);
+            row["densest"] = densest_family(lattices, verdicts);
             line.push_back(row["densest"].template get<std::string>());
             rows.push_back(row);
             table.push_back(line);

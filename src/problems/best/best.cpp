@@ -234,11 +234,30 @@ std::string best_name(const BestLattice<I>& best) {
     return "search lattice (from " + best.checked[best.index].guess.start + ")";
 }
 
+template <class I>
+BestCertificate best_certificate(const BestLattice<I>& best) {
+    if (best.local && best.local->verdict == Outcome::proved) return BestCertificate::local_optimum;
+    if (best.source == BestSource::search) return BestCertificate::search_lattice;
+    if (best.families[best.index].lattice.family == Family::MinkowskiInsertion) return BestCertificate::insertion_lattice;
+    return BestCertificate::family_lattice;
+}
+
+template <class I>
+const FamilyEntry<I>* family_entry(const BestLattice<I>& best, Family family) {
+    for (const FamilyEntry<I>& entry : best.families)
+        if (entry.lattice.family == family) return &entry;
+    return nullptr;
+}
+
 template const DInterval& best_phi(const BestLattice<DInterval>&);
 template const Ball& best_phi(const BestLattice<Ball>&);
 template Basis<DInterval> best_basis(const BestLattice<DInterval>&);
 template Basis<Ball> best_basis(const BestLattice<Ball>&);
 template std::string best_name(const BestLattice<DInterval>&);
 template std::string best_name(const BestLattice<Ball>&);
+template BestCertificate best_certificate(const BestLattice<DInterval>&);
+template BestCertificate best_certificate(const BestLattice<Ball>&);
+template const FamilyEntry<DInterval>* family_entry(const BestLattice<DInterval>&, Family);
+template const FamilyEntry<Ball>* family_entry(const BestLattice<Ball>&, Family);
 
 }  // namespace superpack

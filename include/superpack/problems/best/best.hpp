@@ -78,4 +78,16 @@ Basis<I> best_basis(const BestLattice<I>& best);
 template <class I>
 std::string best_name(const BestLattice<I>& best);
 
+// The claim of the certificate of a certified best lattice. A certified local optimum proves
+// admissibility and phi of the critical lattice as well, so it subsumes the lattice check;
+// otherwise the best lattice's own check: a search lattice's exact basis, Minkowski's exact
+// basis for the insertion, or the family's lattice claim.
+enum class BestCertificate { local_optimum, search_lattice, insertion_lattice, family_lattice };
+template <class I>
+BestCertificate best_certificate(const BestLattice<I>& best);
+
+// The entry of `family` among the families certified at p, or null when p is outside its domain.
+template <class I>
+const FamilyEntry<I>* family_entry(const BestLattice<I>& best, Family family);
+
 }  // namespace superpack
