@@ -132,6 +132,34 @@ TEST_CASE("branch and bound: a budget leaves the boxes still queued unexamined, 
     }
 }
 
+// A driver with only what a run without a budget needs: no reasons (every leaf counts as 0) and
+// no leaves for unexamined boxes.
+struct MinimalDriver {
+    using Box = Dyadic;
+    using Leaf = ::Leaf;
+    std::vector<Leaf> leaves;
+    Examined<Box, Leaf> examine(const Box& box, Visit&) const {
+        if (box.depth == 3) return leaf_of<Box>(Leaf{box, holds_a_third});
+        return split_of<Box, Leaf>(box);
+    }
+    std::array<Box, 2> split(const Box& box) const {
+        return {Dyadic{2 * box.lo, 2 * box.lo + 1, box.depth + 1}, Dyadic{2 * box.lo + 1, 2 * box.hi, box.depth + 1}};
+    }
+    void collect(Leaf&& leaf) { leaves.push_back(leaf); }
+};
+
+TEST_CASE("branch and bound: a driver without reasons counts its leaves as 0, and one without unexamined refuses a budget") {
+    MinimalDriver driver;
+    const BranchResult<Dyadic> result = branch_and_bound(driver, {Dyadic{}}, BranchOptions{});
+    REQUIRE(result.counts.size() == 1);
+    CHECK(result.counts[0] == 8);
+    CHECK(driver.leaves.size() == 8);
+    MinimalDriver budgeted;
+    BranchOptions options;
+    options.max_boxes = 3;
+    CHECK_THROWS_AS(branch_and_bound(budgeted, {Dyadic{}}, options), std::logic_error);
+}
+
 TEST_CASE("branch and bound: a leaf that answers the run drops the rest") {
     ThirdsDriver driver;
     driver.stop_at_lo = 43;  // the free floor interval [43, 44) of 64ths, beside 2/3's [42, 43)

@@ -19,10 +19,12 @@
 //   using Box = ...; using Leaf = ...;
 //   Examined<Box, Leaf> examine(const Box& box, Visit& visit);  the box's leaf, or what to do with it
 //   std::array<Box, 2> split(const Box& box);                    its two children, in the order to visit
-//   Leaf unexamined(const Box& box);                             a box left when the run stopped early
-//   std::size_t reason(const Leaf& leaf);                        the leaf's reason, an index from 0
 //   void collect(Leaf&& leaf);                                   every leaf, in the order they close
-//   double priority(const Box& box);                             best first only: the least is taken first
+// and, where needed:
+//   Leaf unexamined(const Box& box);     a box left when the run stopped early (a run with a box
+//                                        budget or a stop needs it; without it, such a run fails)
+//   std::size_t reason(const Leaf& leaf);  the leaf's reason, an index from 0 (without it, 0)
+//   double priority(const Box& box);     best first only: the least is taken first
 // With one thread the run is deterministic: depth first visits each box's first child (and its
 // whole subtree) before its second, and best first breaks ties as std::priority_queue does.
 #pragma once
@@ -89,34 +91,22 @@ struct Examined {
     double priority = 0;
     bool stop = false;
 };
+// The four answers, one each.
 template <class Box, class Leaf>
 Examined<Box, Leaf> leaf_of(Leaf leaf, bool stop = false) {
-    Examined<Box, Leaf> examined;
-    examined.leaf = std::move(leaf);
-    examined.stop = stop;
-    return examined;
+    return {Examined<Box, Leaf>::Action::leaf, std::move(leaf), std::nullopt, 0, stop};
 }
 template <class Box, class Leaf>
 Examined<Box, Leaf> split_of(Box box) {
-    Examined<Box, Leaf> examined;
-    examined.action = Examined<Box, Leaf>::Action::split;
-    examined.box = std::move(box);
-    return examined;
+    return {Examined<Box, Leaf>::Action::split, std::nullopt, std::move(box)};
 }
 template <class Box, class Leaf>
 Examined<Box, Leaf> defer_of(Box box, double priority) {
-    Examined<Box, Leaf> examined;
-    examined.action = Examined<Box, Leaf>::Action::defer;
-    examined.box = std::move(box);
-    examined.priority = priority;
-    return examined;
+    return {Examined<Box, Leaf>::Action::defer, std::nullopt, std::move(box), priority};
 }
 template <class Box, class Leaf>
 Examined<Box, Leaf> stop_at(Box box) {
-    Examined<Box, Leaf> examined;
-    examined.action = Examined<Box, Leaf>::Action::stop;
-    examined.box = std::move(box);
-    return examined;
+    return {Examined<Box, Leaf>::Action::stop, std::nullopt, std::move(box)};
 }
 
 // What examine may read and write besides the box: the run's size when the box was taken (so
@@ -210,6 +200,18 @@ template <class Driver, class = void>
 struct has_priority : std::false_type {};
 template <class Driver>
 struct has_priority<Driver, std::void_t<decltype(std::declval<Driver&>().priority(std::declval<const typename Driver::Box&>()))>>
+    : std::true_type {};
+
+// Does the driver make leaves of unexamined boxes, and does it give its leaves reasons?
+template <class Driver, class = void>
+struct has_unexamined : std::false_type {};
+template <class Driver>
+struct has_unexamined<Driver, std::void_t<decltype(std::declval<Driver&>().unexamined(std::declval<const typename Driver::Box&>()))>>
+    : std::true_type {};
+template <class Driver, class = void>
+struct has_reason : std::false_type {};
+template <class Driver>
+struct has_reason<Driver, std::void_t<decltype(std::declval<Driver&>().reason(std::declval<const typename Driver::Leaf&>()))>>
     : std::true_type {};
 
 std::string tree_place(std::size_t index);
@@ -308,12 +310,20 @@ class Search {
         }
     }
 
+    Leaf unexamined(const Box& box) {
+        if constexpr (has_unexamined<Driver>::value) {
+            return driver_.unexamined(box);
+        } else {
+            throw std::logic_error("branch and bound: a box was left unexamined, and the driver makes no leaf of it");
+        }
+    }
+
     // What becomes of a box taken from the queue, outside the lock: the driver's answer and, for
     // a split, the children with their places and priorities.
     Examined<Box, Leaf> decide(const Entry<Box>& taken, bool to_examine, Visit& visit, std::vector<Entry<Box>>& children) {
         using Action = typename Examined<Box, Leaf>::Action;
-        Examined<Box, Leaf> examined = to_examine ? driver_.examine(taken.box, visit) : leaf_of<Box>(driver_.unexamined(taken.box));
-        if (examined.action == Action::stop) examined.leaf = driver_.unexamined(*examined.box);
+        Examined<Box, Leaf> examined = to_examine ? driver_.examine(taken.box, visit) : leaf_of<Box>(unexamined(taken.box));
+        if (examined.action == Action::stop) examined.leaf = unexamined(*examined.box);
         if (examined.action == Action::defer && options_.record_trees)
             throw std::logic_error("branch and bound: a deferred box has no place in a recorded tree");
         if (examined.action == Action::split) {
@@ -339,7 +349,8 @@ class Search {
             open_.defer({std::move(*examined.box), std::move(taken.place), examined.priority});
             return;
         }
-        const std::size_t reason = driver_.reason(*examined.leaf);
+        std::size_t reason = 0;
+        if constexpr (has_reason<Driver>::value) reason = driver_.reason(*examined.leaf);
         if (reason >= counts_.size()) counts_.resize(reason + 1, 0);
         ++counts_[reason];
         ++closed_;

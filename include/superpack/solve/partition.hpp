@@ -62,9 +62,6 @@ struct Driver {
         auto halves = bisect_widest(box);
         return {std::move(halves.first), std::move(halves.second)};
     }
-    // Never called: partition's run has no box budget and no leaf that stops it.
-    Leaf unexamined(const Box& box) const { return give_up(box, "not examined"); }
-    std::size_t reason(const Leaf&) const { return 0; }
     void collect(Leaf&& leaf) { leaves.push_back(std::move(leaf)); }
 };
 

@@ -227,9 +227,6 @@ struct AuditDriver {
         const AuditSpan lower{span.lo, middle, span.depth + 1}, upper{middle, span.hi, span.depth + 1};
         return span.downward ? std::array<Box, 2>{upper, lower} : std::array<Box, 2>{lower, upper};
     }
-    // Never called: the audit's run has no box budget (the piece limit is the driver's) and no stop.
-    Leaf unexamined(const Box& span) const { return not_audited(span); }
-    std::size_t reason(const Leaf&) const { return 0; }
     void collect(Leaf&& piece) {
         if (progress)
             progress(std::string(to_string(family)) + " p in [" + decimal_or_fraction_text(piece.lo) + ", " +
