@@ -305,9 +305,10 @@ std::vector<Rational> segment_ends(Family family, const AuditRange& range) {
 // result as its anchor). Nothing for the families whose pieces need no continuation.
 std::optional<BranchTracker> continuation(Family family, const AuditRange& range, AuditBranch branch, AuditResult& result) {
     std::optional<BranchTracker> tracker;
-    const std::vector<double>& continuation_start = family_definition(family).continuation_start;
-    if (!continuation_start.empty()) {
-        const std::vector<double> root = branch == AuditBranch::published ? continuation_start : std::vector{5.0 / 12, 1.0 / 6};
+    const FamilyDefinition& definition = family_definition(family);
+    if (!definition.continuation_start.empty()) {
+        const std::vector<double>& root =
+            branch == AuditBranch::published ? definition.continuation_start : definition.second_root_start;
         tracker = BranchTracker{root, std::nullopt, std::nullopt, false};
         if (range.lo != Rational(1, 2)) {
             const FamilyLattice<DInterval> start = enclose_family_at(family, piece_interval(range.lo, range.lo));

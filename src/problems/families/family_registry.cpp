@@ -34,10 +34,10 @@ std::vector<FamilyDefinition> make_registry() {
     return {
         {Family::C0, "C0", jst + "Eqs. 1-3", "p >= 1", [](const Rational& p) { return domain_if(p >= 1); }, true,
          {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 1, -1}, {1, 0, -1}, {1, 1, -1}}, 12,
-         enclose_cubic<DInterval>, enclose_cubic<Ball>, nullptr, false, cubic_range, nullptr, {16, 12}, {}},
+         enclose_cubic<DInterval>, enclose_cubic<Ball>, nullptr, false, cubic_range, nullptr, {16, 12}, {}, {}},
         {Family::C1, "C1", jst + "Eqs. 8-10", "p >= 1", [](const Rational& p) { return domain_if(p >= 1); }, true,
          {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, -1, 0}, {1, 0, -1}, {0, 1, -1}}, 12,
-         enclose_cubic<DInterval>, enclose_cubic<Ball>, nullptr, false, cubic_range, nullptr, {16, 12}, {}},
+         enclose_cubic<DInterval>, enclose_cubic<Ball>, nullptr, false, cubic_range, nullptr, {16, 12}, {}, {}},
         {Family::O0, "O0", jst + "Eqs. 5-7", "1/2 < p <= 1",
          [](const Rational& p) { return domain_if(p > Rational(1, 2) && p <= 1); }, true,
          {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, -1}, {0, 1, -1}, {1, 1, -1}}, 12,
@@ -46,10 +46,10 @@ std::vector<FamilyDefinition> make_registry() {
              return AuditRange{octahedral_crossover_below(), Rational(1), {octahedral_crossover_above()},
                                "claimed [p*_o, 1]; " + bracket_note};
          },
-         nullptr, {16, 12}, {}},
+         nullptr, {16, 12}, {}, {}},
         // O1's root search (two unknowns) costs grow fast with the width of p: keep pieces ~7e-4
         // and do not bisect (an undecided piece still gets the certified midpoint check). Its
-        // branch starts at Minkowski's (q, s) = (1/6, 2/3).
+        // branch starts at Minkowski's (q, s) = (1/6, 2/3), its second root's at (5/12, 1/6).
         {Family::O1, "O1", jst + "Eqs. 11-13", "p >= 1/2", [](const Rational& p) { return domain_if(p >= Rational(1, 2)); },
          true, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, -1, 0}, {1, 0, -1}}, 12,
          enclose_o1<DInterval>, enclose_o1<Ball>, nullptr, false,
@@ -57,7 +57,7 @@ std::vector<FamilyDefinition> make_registry() {
              return AuditRange{Rational(1, 2), octahedral_crossover_above(), {octahedral_crossover_below()},
                                "claimed [1/2, p*_o]; " + bracket_note};
          },
-         nullptr, {300, 3}, {1.0 / 6, 2.0 / 3}},
+         nullptr, {300, 3}, {1.0 / 6, 2.0 / 3}, {5.0 / 12, 1.0 / 6}},
         // D14 follows its root by continuation from (x, y, z) = (1/3, 1/6, 1/2) (a small
         // Krawczyk box per piece, no search), so the pieces may be wide; they only shrink where
         // the root nears the fold at p*_o.
@@ -70,7 +70,7 @@ std::vector<FamilyDefinition> make_registry() {
              return AuditRange{Rational(1, 2), octahedral_crossover_above(), {octahedral_crossover_below()},
                                "Dostert and Vallentin prove (1/2, 0.79] and conjecture [1/2, p*_o]; " + bracket_note};
          },
-         nullptr, {32, 12}, {1.0 / 3, 1.0 / 6, 1.0 / 2}},
+         nullptr, {32, 12}, {1.0 / 3, 1.0 / 6, 1.0 / 2}, {}},
         // S6: contacts by the constraints n_i = 2 of the KKT system, Minkowski's six pairs. The
         // mean-value Krawczyk proves pieces 1.25e-4 wide near 9/10, not 2.5e-4 (NOTES.md 4.2).
         {Family::S6, "S6",
@@ -84,7 +84,7 @@ std::vector<FamilyDefinition> make_registry() {
                                "S6 is defined on (p*_o, 1); the default audits a range about the point proof at p = 9/10 "
                                "that runs in seconds (audit --family S6 --p-range a:b for others; NOTES.md 4.2)"};
          },
-         nullptr, {160, 8}, {}},
+         nullptr, {160, 8}, {}, {}},
         // No contact equations: the basis is exact, and the lattice check with the exact p
         // decides its contacts exactly.
         {Family::MinkowskiInsertion, "minkowski-insertion",
@@ -94,7 +94,7 @@ std::vector<FamilyDefinition> make_registry() {
          enclose_insertion<DInterval>, enclose_insertion<Ball>, minkowski_octahedron_basis, false, nullptr,
          "audit: minkowski-insertion is not audited yet: its lattice does not depend on p, but the star-body test below "
          "p = 1/2 takes one exact p (check-lattice --family minkowski-insertion --p P decides each p)",
-         {16, 12}, {}},
+         {16, 12}, {}, {}},
     };
 }
 

@@ -57,6 +57,8 @@ struct FamilyDefinition {
     const char* not_audited;
     AuditSettings audit_settings;
     std::vector<double> continuation_start;
+    // O1 only: where the continuation of its second root (audit --branch second-root) starts.
+    std::vector<double> second_root_start;
 };
 
 // Every family, in the order of the tables (C0, C1, O0, O1, D14, S6, minkowski-insertion).
