@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "checker/core/limits.hpp"
+#include "checker/core/tree_walk.hpp"
 
 namespace superpack_checker {
 
@@ -51,10 +52,7 @@ public:
         : context_(context), tree_(tree), start_(start), setting_(setting), path_(path), counts_(counts) {}
 
     void run() {
-        std::vector<Pending> stack{{start_.x, 0}};
-        while (!stack.empty()) {
-            Pending node = std::move(stack.back());
-            stack.pop_back();
+        walk_tree(Pending{start_.x, 0}, [&](Pending& node, std::vector<Pending>& stack) {
             node_at_ = at_;
             if (counts_.nodes % 1024 == 0) report_progress();
             try {
@@ -62,7 +60,7 @@ public:
             } catch (const std::domain_error& error) {
                 reject(std::string("evaluation outside its domain: ") + error.what());
             }
-        }
+        });
         if (at_ != tree_.size()) malformed("characters after the last leaf of the tree");
     }
 

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "checker/core/limits.hpp"
+#include "checker/core/tree_walk.hpp"
 
 namespace superpack_checker {
 
@@ -195,28 +197,33 @@ Real replay_newton(Context& context, const std::function<Real(const Real&)>& f,
 
 namespace {
 
-Box check_split_tree(Context& context, const Json& node, const std::string& path, const LeafCheck& leaf, int depth) {
-    if (depth > max_proof_depth)
-        context.malformed(path, "a proof tree deeper than " + std::to_string(max_proof_depth) + " splits (max_proof_depth)");
-    const Box box = context.box(context.member(node, "box", path), path + ".box");
-    if (context.string_at(node, "kind", path) != "split") {
-        context.current_step = path;
-        leaf(node, box, path);
-        return box;
-    }
-    const Json& cases = context.member(node, "cases", path);
-    if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
-    context.require(cases.size() == 2, path + ".cases", "a split needs both of its cases");
-    const Json& dimension_json = context.member(node, "dimension", path);
-    if (!dimension_json.is_number_unsigned() || dimension_json.get<std::size_t>() >= box.size())
-        context.malformed(path + ".dimension", "not a dimension of the box");
-    const std::size_t dimension = dimension_json.get<std::size_t>();
-    const std::string left_path = path + ".cases[0]", right_path = path + ".cases[1]";
-    const Box left = check_split_tree(context, cases[0], left_path, leaf, depth + 1);
-    const Box right = check_split_tree(context, cases[1], right_path, leaf, depth + 1);
-    context.require(left.size() == box.size() && right.size() == box.size(), path, "children of another dimension");
-    // The two children cover the box: along `dimension` they reach its ends and meet (or
-    // overlap), along the others each holds the box's whole side.
+// A split whose two children are still to replay: what checking that they cover its box needs.
+struct SplitCover {
+    std::string path;
+    Box box;
+    std::size_t dimension = 0;
+    Box left, right;  // the children's boxes, written when each is replayed
+};
+
+// A step of the walk: a node to replay (its box goes to `box`, read by its parent's cover
+// check), or, with no node, the cover check of `split`, once both its children are replayed.
+struct PartitionStep {
+    const Json* node = nullptr;
+    std::string path;
+    int depth = 0;
+    Box* box = nullptr;
+    std::shared_ptr<SplitCover> split;
+};
+
+// The two children cover the box: along `dimension` they reach its ends and meet (or overlap),
+// along the others each holds the box's whole side.
+void check_cover(Context& context, const SplitCover& split) {
+    const Box& box = split.box;
+    const Box& left = split.left;
+    const Box& right = split.right;
+    const std::size_t dimension = split.dimension;
+    const std::string left_path = split.path + ".cases[0]", right_path = split.path + ".cases[1]";
+    context.require(left.size() == box.size() && right.size() == box.size(), split.path, "children of another dimension");
     const Real& side = box[dimension];
     context.require(mpfr_cmp(left[dimension].lo(), side.lo()) <= 0, left_path + ".box",
                     "the first case does not reach the lower end of its parent");
@@ -229,13 +236,44 @@ Box check_split_tree(Context& context, const Json& node, const std::string& path
         context.require(subset(box[k], left[k]), left_path + ".box", "the case does not hold its parent's side");
         context.require(subset(box[k], right[k]), right_path + ".box", "the case does not hold its parent's side");
     }
-    return box;
+}
+
+// One node: a leaf is handed to `leaf`; a split pushes its cover check, then its two cases.
+void replay_partition_step(Context& context, PartitionStep& step, std::vector<PartitionStep>& stack, const LeafCheck& leaf) {
+    if (!step.node) {
+        check_cover(context, *step.split);
+        return;
+    }
+    const Json& node = *step.node;
+    const std::string& path = step.path;
+    if (step.depth > max_proof_depth)
+        context.malformed(path, "a proof tree deeper than " + std::to_string(max_proof_depth) + " splits (max_proof_depth)");
+    const Box box = context.box(context.member(node, "box", path), path + ".box");
+    *step.box = box;
+    if (context.string_at(node, "kind", path) != "split") {
+        context.current_step = path;
+        leaf(node, box, path);
+        return;
+    }
+    const Json& cases = context.member(node, "cases", path);
+    if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
+    context.require(cases.size() == 2, path + ".cases", "a split needs both of its cases");
+    const Json& dimension_json = context.member(node, "dimension", path);
+    if (!dimension_json.is_number_unsigned() || dimension_json.get<std::size_t>() >= box.size())
+        context.malformed(path + ".dimension", "not a dimension of the box");
+    auto split = std::make_shared<SplitCover>(SplitCover{path, box, dimension_json.get<std::size_t>(), {}, {}});
+    stack.push_back({nullptr, {}, 0, nullptr, split});
+    stack.push_back({&cases[1], path + ".cases[1]", step.depth + 1, &split->right, nullptr});
+    stack.push_back({&cases[0], path + ".cases[0]", step.depth + 1, &split->left, nullptr});
 }
 
 }  // namespace
 
 Box check_partition(Context& context, const Json& node, const std::string& path, const LeafCheck& leaf) {
-    return check_split_tree(context, node, path, leaf, 0);
+    Box root;
+    walk_tree(PartitionStep{&node, path, 0, &root, nullptr},
+              [&](PartitionStep& step, std::vector<PartitionStep>& stack) { replay_partition_step(context, step, stack, leaf); });
+    return root;
 }
 
 void check_root_leaf(Context& context, const System& system, const Json& leaf, const Box& box,
