@@ -11,27 +11,6 @@ std::string read_family(Context& context, const Json& data, const Json& inputs) 
     return family;
 }
 
-void require_family_domain(Context& context, const std::string& family, const mpq_class& lo, const mpq_class& hi,
-                           const std::string& path) {
-    const mpq_class half(1, 2);
-    if (family == "C0" || family == "C1")
-        context.require(lo >= 1, path, "outside the domain p >= 1 of " + family);
-    else if (family == "O0")
-        context.require(lo > half && hi <= 1, path, "outside the domain 1/2 < p <= 1 of O0");
-    else if (family == "O1")
-        context.require(lo >= half, path, "outside the domain p >= 1/2 of O1");
-    else if (family == "D14")
-        context.require(lo >= half && hi <= 1, path, "outside the domain 1/2 <= p <= 1 of D14");
-    else if (family == "S6") {
-        context.require(hi < 1, path, "outside the domain ln3/ln4 < p < 1 of S6: p is not below 1");
-        const mpfr_prec_t precision = context.precision();
-        const Real crossover = log(integer(3, precision)) / log(integer(4, precision));
-        context.require(less(crossover, rational(lo, precision)), path,
-                        "outside the domain ln3/ln4 < p < 1 of S6: p is not certainly above ln3/ln4");
-    } else
-        context.malformed("claim.data.family", "unknown family \"" + family + "\"");
-}
-
 namespace {
 
 System one_dimensional(const CubicEquation& equation) {
@@ -252,14 +231,70 @@ System octahedral_system(const Real& p) {
             }};
 }
 
+namespace {
+
+// The checker's side of the family registry: one entry per family, with its claimed domain
+// (a check of [lo, hi] that rejects at `path`) and the replay of its parameter proof. A family
+// unknown here is malformed wherever a claim names it.
+struct CheckerFamily {
+    const char* name;
+    void (*require_domain)(Context& context, const mpq_class& lo, const mpq_class& hi, const std::string& path);
+    FamilyParameters (*replay)(Context& context, const Json& proof, const std::string& path, const Real& p,
+                               const std::string& p_path);
+};
+
+void require_s6_domain(Context& context, const mpq_class& lo, const mpq_class& hi, const std::string& path) {
+    context.require(hi < 1, path, "outside the domain ln3/ln4 < p < 1 of S6: p is not below 1");
+    const mpfr_prec_t precision = context.precision();
+    const Real crossover = log(integer(3, precision)) / log(integer(4, precision));
+    context.require(less(crossover, rational(lo, precision)), path,
+                    "outside the domain ln3/ln4 < p < 1 of S6: p is not certainly above ln3/ln4");
+}
+
+const std::vector<CheckerFamily>& checker_families() {
+    using Path = const std::string&;
+    static const std::vector<CheckerFamily> families{
+        {"C0", [](Context& c, const mpq_class& lo, const mpq_class&, Path path) { c.require(lo >= 1, path, "outside the domain p >= 1 of C0"); },
+         [](Context& c, const Json& proof, Path path, const Real& p, Path) { return replay_cubic(c, proof, path, false, p); }},
+        {"C1", [](Context& c, const mpq_class& lo, const mpq_class&, Path path) { c.require(lo >= 1, path, "outside the domain p >= 1 of C1"); },
+         [](Context& c, const Json& proof, Path path, const Real& p, Path) { return replay_cubic(c, proof, path, true, p); }},
+        {"O0",
+         [](Context& c, const mpq_class& lo, const mpq_class& hi, Path path) {
+             c.require(lo > mpq_class(1, 2) && hi <= 1, path, "outside the domain 1/2 < p <= 1 of O0");
+         },
+         [](Context& c, const Json& proof, Path path, const Real& p, Path) { return replay_o0(c, proof, path, p); }},
+        {"O1",
+         [](Context& c, const mpq_class& lo, const mpq_class&, Path path) {
+             c.require(lo >= mpq_class(1, 2), path, "outside the domain p >= 1/2 of O1");
+         },
+         replay_o1},
+        {"D14",
+         [](Context& c, const mpq_class& lo, const mpq_class& hi, Path path) {
+             c.require(lo >= mpq_class(1, 2) && hi <= 1, path, "outside the domain 1/2 <= p <= 1 of D14");
+         },
+         [](Context& c, const Json& proof, Path path, const Real& p, Path) { return replay_d14(c, proof, path, p); }},
+        {"S6", require_s6_domain,
+         [](Context& c, const Json& proof, Path path, const Real& p, Path) { return replay_s6(c, proof, path, p); }},
+    };
+    return families;
+}
+
+const CheckerFamily& checker_family(Context& context, const std::string& family) {
+    for (const CheckerFamily& entry : checker_families())
+        if (family == entry.name) return entry;
+    context.malformed("claim.data.family", "unknown family \"" + family + "\"");
+}
+
+}  // namespace
+
+void require_family_domain(Context& context, const std::string& family, const mpq_class& lo, const mpq_class& hi,
+                           const std::string& path) {
+    checker_family(context, family).require_domain(context, lo, hi, path);
+}
+
 FamilyParameters replay_family_parameters(Context& context, const std::string& family, const Json& proof,
                                           const std::string& path, const Real& p, const std::string& p_path) {
-    if (family == "C0" || family == "C1") return replay_cubic(context, proof, path, family == "C1", p);
-    if (family == "O0") return replay_o0(context, proof, path, p);
-    if (family == "O1") return replay_o1(context, proof, path, p, p_path);
-    if (family == "D14") return replay_d14(context, proof, path, p);
-    if (family == "S6") return replay_s6(context, proof, path, p);
-    context.malformed("claim.data.family", "unknown family \"" + family + "\"");
+    return checker_family(context, family).replay(context, proof, path, p, p_path);
 }
 
 }  // namespace superpack_checker
