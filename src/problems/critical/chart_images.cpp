@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "superpack/problems/critical/critical.hpp"
+#include "superpack/solve/dense3.hpp"
 
 namespace superpack {
 
@@ -29,15 +30,15 @@ std::vector<SignedPermutation> signed_permutations() {
     return all;
 }
 
-using Vector = std::array<double, 3>;
+using dense::Vector3;
 
-Vector permuted(const Vector& u, const SignedPermutation& s) {
+Vector3 permuted(const Vector3& u, const SignedPermutation& s) {
     return {s.sign[0] * u[s.perm[0]], s.sign[1] * u[s.perm[1]], s.sign[2] * u[s.perm[2]]};
 }
 
-double max_norm(const Vector& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
+double max_norm(const Vector3& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
 
-bool close(const Vector& a, const Vector& b) {
+bool close(const Vector3& a, const Vector3& b) {
     return std::fabs(a[0] - b[0]) < tolerance && std::fabs(a[1] - b[1]) < tolerance && std::fabs(a[2] - b[2]) < tolerance;
 }
 
@@ -59,13 +60,13 @@ std::array<Coefficients, 3> unimodular_inverse(const std::array<Coefficients, 3>
 
 // The region's contact vectors +-c B* (B* the midpoint of its centre basis), each with its
 // coefficients c (a step of its own: the candidates b1, b2, b3 are drawn from them).
-void contact_vectors(const ClosingRegion<DInterval>& region, std::vector<Vector>& vectors, std::vector<Coefficients>& coefficients) {
+void contact_vectors(const ClosingRegion<DInterval>& region, std::vector<Vector3>& vectors, std::vector<Coefficients>& coefficients) {
     DoubleBasis reference{};
     for (int k = 0; k < 3; ++k)
         for (int j = 0; j < 3; ++j) reference[k][j] = mid_double(region.center[k][j]);
     for (const Coefficients& c : region.contacts)
         for (const int sign : {1, -1}) {
-            Vector v{};
+            Vector3 v{};
             for (int j = 0; j < 3; ++j) v[j] = sign * (c[0] * reference[0][j] + c[1] * reference[1][j] + c[2] * reference[2][j]);
             vectors.push_back(v);
             coefficients.push_back({sign * c[0], sign * c[1], sign * c[2]});
@@ -74,11 +75,11 @@ void contact_vectors(const ClosingRegion<DInterval>& region, std::vector<Vector>
 
 // Whether b1 is the longest in the max norm among its orbit (every vector for A3, b1..b3 for
 // W): the chart's normalisation, one test of a candidate.
-bool longest_first(MinkowskiCase configuration, const Vector& b1, const Vector& b2, const Vector& b3,
-                   const std::array<Vector, 3>& others) {
+bool longest_first(MinkowskiCase configuration, const Vector3& b1, const Vector3& b2, const Vector3& b3,
+                   const std::array<Vector3, 3>& others) {
     double longest = std::max(max_norm(b2), max_norm(b3));
     if (configuration == MinkowskiCase::a3)
-        for (const Vector& v : others) longest = std::max(longest, max_norm(v));
+        for (const Vector3& v : others) longest = std::max(longest, max_norm(v));
     return !(longest > max_norm(b1) + tolerance);
 }
 
@@ -98,8 +99,8 @@ bool triples_are_contacts(const ClosingRegion<DInterval>& region, MinkowskiCase 
 
 // Whether `images` already holds this configuration's chart basis: one image per chart basis
 // (the lattice's own symmetries give the others).
-bool already_found(const std::vector<ChartImage>& images, MinkowskiCase configuration, const Vector& b1, const Vector& b2,
-                   const Vector& b3) {
+bool already_found(const std::vector<ChartImage>& images, MinkowskiCase configuration, const Vector3& b1, const Vector3& b2,
+                   const Vector3& b3) {
     return std::any_of(images.begin(), images.end(), [&](const ChartImage& known) {
         return known.configuration == configuration && close(known.chart_basis[0], b1) && close(known.chart_basis[1], b2) &&
                close(known.chart_basis[2], b3);
@@ -111,28 +112,28 @@ bool already_found(const std::vector<ChartImage>& images, MinkowskiCase configur
 std::vector<ChartImage> chart_images(const ClosingRegion<DInterval>& region, std::size_t index) {
     std::vector<ChartImage> images;
     if (region.verdict != Outcome::proved) return images;
-    std::vector<Vector> vectors;
+    std::vector<Vector3> vectors;
     std::vector<Coefficients> coefficients;
     contact_vectors(region, vectors, coefficients);
-    auto is_contact = [&](const Vector& v) {
-        return std::any_of(vectors.begin(), vectors.end(), [&](const Vector& u) { return close(u, v); });
+    auto is_contact = [&](const Vector3& v) {
+        return std::any_of(vectors.begin(), vectors.end(), [&](const Vector3& u) { return close(u, v); });
     };
     for (const SignedPermutation& s : signed_permutations())
         for (std::size_t i1 = 0; i1 < vectors.size(); ++i1) {
-            const Vector b1 = permuted(vectors[i1], s);
+            const Vector3 b1 = permuted(vectors[i1], s);
             // b1 in the chart's cone x >= y >= z >= 0.
             if (b1[0] < b1[1] - tolerance || b1[1] < b1[2] - tolerance || b1[2] < -tolerance) continue;
             for (std::size_t i2 = 0; i2 < vectors.size(); ++i2)
                 for (std::size_t i3 = 0; i3 < vectors.size(); ++i3) {
-                    const Vector b2 = permuted(vectors[i2], s), b3 = permuted(vectors[i3], s);
-                    const Vector &u1 = vectors[i1], &u2 = vectors[i2], &u3 = vectors[i3];
+                    const Vector3 b2 = permuted(vectors[i2], s), b3 = permuted(vectors[i3], s);
+                    const Vector3 &u1 = vectors[i1], &u2 = vectors[i2], &u3 = vectors[i3];
                     for (const MinkowskiCase configuration : {MinkowskiCase::a3, MinkowskiCase::w}) {
                         // The contacts are those of B*, before the permutation (which keeps max norms).
                         const int sigma = configuration == MinkowskiCase::a3 ? -1 : 1;
-                        const std::array<Vector, 3> others{
-                            Vector{u1[0] + sigma * u2[0], u1[1] + sigma * u2[1], u1[2] + sigma * u2[2]},
-                            Vector{u2[0] + sigma * u3[0], u2[1] + sigma * u3[1], u2[2] + sigma * u3[2]},
-                            Vector{u3[0] + sigma * u1[0], u3[1] + sigma * u1[1], u3[2] + sigma * u1[2]}};
+                        const std::array<Vector3, 3> others{
+                            Vector3{u1[0] + sigma * u2[0], u1[1] + sigma * u2[1], u1[2] + sigma * u2[2]},
+                            Vector3{u2[0] + sigma * u3[0], u2[1] + sigma * u3[1], u2[2] + sigma * u3[2]},
+                            Vector3{u3[0] + sigma * u1[0], u3[1] + sigma * u1[1], u3[2] + sigma * u1[2]}};
                         if (!std::all_of(others.begin(), others.end(), is_contact)) continue;
                         if (!longest_first(configuration, b1, b2, b3, others)) continue;
                         const std::array<Coefficients, 3> w{coefficients[i1], coefficients[i2], coefficients[i3]};

@@ -2,12 +2,12 @@
 // multipliers, the contractor's preconditioner): any result is sound to use, since what a box's
 // reason proves never depends on these values, only its sharpness does.
 #pragma once
-#include <array>
+#include "superpack/solve/dense3.hpp"
 
 namespace superpack {
 
-using Vector3 = std::array<double, 3>;
-using Matrix3 = std::array<Vector3, 3>;
+using dense::Matrix3;
+using dense::Vector3;
 
 // Cramer's rule for m y = r; zero when m is nearly singular.
 Vector3 solve3(const Matrix3& m, const Vector3& r);

@@ -9,13 +9,15 @@
 #include "superpack/problems/guess/compass_pass.hpp"
 #include "superpack/problems/guess/difference_gauge.hpp"
 #include "superpack/solve/approximate_inverse.hpp"
+#include "superpack/solve/dense3.hpp"
 
 namespace superpack {
 
 namespace {
 
 using Triple = std::array<long, 3>;
-using Vector = std::array<double, 3>;
+using dense::dot;
+using dense::Vector3;
 
 // One coefficient triple per +-pair with every |c_i| <= 2: after reduction the shortest vectors
 // of a 3-dimensional lattice lie there (a guess; the certification enumerates a proved box).
@@ -33,15 +35,13 @@ const std::vector<Triple>& short_triples() {
     return triples;
 }
 
-Vector combine(const Triple& c, const DoubleBasis& b) {
-    Vector v{};
+Vector3 combine(const Triple& c, const DoubleBasis& b) {
+    Vector3 v{};
     for (int j = 0; j < 3; ++j) v[j] = c[0] * b[0][j] + c[1] * b[1][j] + c[2] * b[2][j];
     return v;
 }
 
-double dot(const Vector& a, const Vector& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-double max_norm(const Vector& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
+double max_norm(const Vector3& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
 
 // The most coefficient pairs for_each_in_cube walks: a basis that needs more is so skewed that
 // the search treats it as no packing.
@@ -59,9 +59,9 @@ std::optional<CubeLimits> cube_limits(const DoubleBasis& b, double bound) {
     CubeLimits cube{};
     for (int k = 0; k < 3; ++k) {
         // Column k of B^-1 is the cross product of the other two rows over det.
-        const Vector& u = b[(k + 1) % 3];
-        const Vector& w = b[(k + 2) % 3];
-        const Vector cross{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+        const Vector3& u = b[(k + 1) % 3];
+        const Vector3& w = b[(k + 2) % 3];
+        const Vector3 cross = dense::cross(u, w);
         const double reach = bound * (std::fabs(cross[0]) + std::fabs(cross[1]) + std::fabs(cross[2])) / std::fabs(det);
         if (!(reach < 1e6)) return std::nullopt;
         cube.limit[k] = static_cast<long>(std::floor(reach * (1 + 1e-9)));
@@ -88,7 +88,7 @@ bool for_each_in_cube(const DoubleBasis& b, double bound, Visit&& visit) {
     const double reach = bound * (1 + 1e-9);
     for (long a = -limit[first]; a <= limit[first]; ++a)
         for (long c = -limit[second]; c <= limit[second]; ++c) {
-            Vector partial{};
+            Vector3 partial{};
             for (int j = 0; j < 3; ++j) partial[j] = a * b[first][j] + c * b[second][j];
             double low = -HUGE_VAL, high = HUGE_VAL;
             for (int j = 0; j < 3; ++j) {
@@ -131,7 +131,7 @@ void reduce(DoubleBasis& b) {
             }
         if (!changed) break;
     }
-    std::sort(b.begin(), b.end(), [](const Vector& x, const Vector& y) { return dot(x, x) < dot(y, y); });
+    std::sort(b.begin(), b.end(), [](const Vector3& x, const Vector3& y) { return dot(x, x) < dot(y, y); });
     if (determinant(b) < 0)
         for (double& x : b[2]) x = -x;
 }
@@ -147,7 +147,7 @@ double shortest_over(const DoubleBasis& b, double p, const std::vector<Triple>& 
     double shortest = HUGE_VAL;
     for (const std::vector<Triple>* triples : {&short_triples(), &extra})
         for (const Triple& c : *triples) {
-            const Vector v = combine(c, b);
+            const Vector3 v = combine(c, b);
             // 2 ||v||_D is at least max |v_i|: no need to evaluate a vector that cannot be shorter.
             if (max_norm(v) < shortest) shortest = std::min(shortest, packing_norm(v, p));
         }
@@ -221,7 +221,7 @@ struct KktSystem {
                 r[3 * k + j] = b[k1][j1] * b[k2][j2] - b[k1][j2] * b[k2][j1];
             }
         for (std::size_t i = 0; i < active.size(); ++i) {
-            const Vector v = combine(active[i], b);
+            const Vector3 v = combine(active[i], b);
             const double n = norm_2p(v, p);
             const double mu = x[9 + i];
             for (int k = 0; k < 3; ++k)
@@ -324,7 +324,7 @@ namespace {
 std::vector<Triple> near_shortest(const DoubleBasis& b, double p, double tolerance) {
     const double shortest = shortest_norm(b, p);
     std::vector<Triple> near;
-    auto visit = [&](const Triple& c, const Vector& v) {
+    auto visit = [&](const Triple& c, const Vector3& v) {
         if (packing_norm(v, p) <= shortest * (1 + tolerance)) near.push_back(c);
     };
     if (p >= 0.5) {
@@ -363,7 +363,7 @@ double shortest_norm(const DoubleBasis& basis, double p) {
     // Below 1/2 the packing norm is far from Euclidean (a thin cross's arm reaches through many
     // lattice cells), so the short triples of a reduced basis may miss the shortest vector: every
     // vector that could be shorter, max |v_i| below the shortest so far, is visited.
-    auto visit = [&](const Triple&, const Vector& v) {
+    auto visit = [&](const Triple&, const Vector3& v) {
         if (max_norm(v) < shortest) shortest = std::min(shortest, packing_norm(v, p));
     };
     if (p < 0.5 && !for_each_in_cube(basis, shortest, visit)) return 0;
@@ -410,7 +410,7 @@ SearchResult search_dense_lattices(double p, double volume, const std::vector<Se
             if (p >= 0.5) break;
             const double shortest = shortest_over(b, p, cuts);
             const std::size_t before = cuts.size();
-            enumerable = for_each_in_cube(b, shortest, [&](const Triple& c, const Vector& v) {
+            enumerable = for_each_in_cube(b, shortest, [&](const Triple& c, const Vector3& v) {
                 if (packing_norm(v, p) < shortest * (1 - 1e-12)) cuts.push_back(c);
             });
             if (cuts.size() == before) break;
