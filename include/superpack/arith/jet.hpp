@@ -137,6 +137,8 @@ template <class I> const I& value_of(const Jet<I>& a) { return a.value; }
 inline const DInterval& value_of(const DInterval& a) { return a; }
 inline const Ball& value_of(const Ball& a) { return a; }
 inline double value_of(const double& a) { return a; }
+// The field (arith/interval.hpp field_of) of a scalar's value: one Jet<I> and its I share it.
+template <class T> auto scalar_field(const T& x) { return field_of(value_of(x)); }
 
 }  // namespace superpack
 

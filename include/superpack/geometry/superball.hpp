@@ -6,11 +6,6 @@
 
 namespace superpack {
 
-template <class T>
-auto scalar_field(const T& x) {
-    return field_of(value_of(x));
-}
-
 // Volume of the unit ball of the l_q norm in R^d, q = 2p:
 //   V_d(p) = (2 Gamma(1 + 1/(2p)))^d / Gamma(1 + d/(2p)).
 // d = 3 is the paper's V_sb(p) (Eq. 4; NOTES.md shows the two forms agree), d = 2 the
