@@ -27,6 +27,8 @@
 #   scripts/make-proofs.sh BUILD OUT_DIR/<side>/proofs   (every certificate of `make proofs`,
 #       each replayed by that build's `superpack verify`; this checkout's make-proofs.sh is used
 #       for both sides, so both write the same list, and no checkout's proofs/ is touched)
+#   superpack verify --json CERTIFICATE   (each of those, into OUT_DIR/<side>/verified: the
+#       checker's sentences and counts, with the exit status)
 # and each command's exit status is compared too (stderr, progress and timings, is kept in
 # OUT_DIR/<side>/json/NAME.stderr but not compared).
 #
@@ -115,6 +117,17 @@ run_side() {
     "$root/scripts/make-proofs.sh" "$build" "$dir/proofs" >"$dir/make-proofs.log" 2>&1 || status=$?
     echo "$status" >"$dir/make-proofs.rc"
     record "$dir" make-proofs "$begin" "$status"
+    # What that build's checker says of each certificate: its claim sentence and counts.
+    begin=$(now)
+    mkdir -p "$dir/verified"
+    for certificate in "$dir"/proofs/*.json; do
+        [ -e "$certificate" ] || continue
+        name=$(basename "$certificate")
+        status=0
+        (cd "$dir/proofs" && "$build/superpack" verify --json "$name" </dev/null >"$dir/verified/$name" 2>/dev/null) || status=$?
+        echo "$status" >"$dir/verified/${name%.json}.rc"
+    done
+    record "$dir" verify "$begin" 0
     elapsed "$start" "$(now)" >"$dir/seconds"
 }
 
@@ -310,6 +323,8 @@ for name in sorted(files("old", "work/audit", ".json") | files("new", "work/audi
     items.append(("files/audit/" + name, "work/audit/" + name, True, None))
 for name in sorted(files("old", "proofs", ".json") | files("new", "proofs", ".json")):
     items.append(("proofs/" + name, "proofs/" + name, False, None))
+for name in sorted(files("old", "verified", ".json") | files("new", "verified", ".json")):
+    items.append(("verified/" + name, "verified/" + name, True, "verified/" + name[:-5] + ".rc"))
 
 different = 0
 
