@@ -49,27 +49,17 @@ Json basis_json(const Basis<I>& basis) {
     return rows;
 }
 
-// Each family proved a packing at p against the best: "beats" when the gap is certainly
-// positive, "ties" otherwise, with the reason.
+// Each family proved a packing at p against the best (compare_families): beats or ties, with
+// the reason of a tie.
 template <class I>
 Json comparison_json(const BestLattice<I>& best) {
     Json list = Json::array();
-    const I& phi = best_phi(best);
-    for (std::size_t k = 0; k < best.families.size(); ++k) {
-        const FamilyEntry<I>& entry = best.families[k];
-        if (entry.check.verdict != Outcome::proved || !entry.lattice.phi) continue;
-        const I gap = phi - *entry.lattice.phi;
+    for (const FamilyComparison<I>& comparison : compare_families(best)) {
+        const FamilyEntry<I>& entry = *comparison.entry;
         Json item{{"family", to_string(entry.lattice.family)}, {"phi", enclosure_json(*entry.lattice.phi)},
-                  {"gap", enclosure_json(gap)}};
-        if (best.source == BestSource::family && best.index == k) {
-            item["relation"] = "ties";
-            item["reason"] = "it is the best lattice";
-        } else if (certainly_positive(gap)) {
-            item["relation"] = "beats";
-        } else {
-            item["relation"] = "ties";
-            item["reason"] = "phi not separated from the best lattice's at this precision";
-        }
+                  {"gap", enclosure_json(comparison.gap)}};
+        item["relation"] = comparison.relation == FamilyRelation::beats ? "beats" : "ties";
+        if (comparison.relation == FamilyRelation::ties) item["reason"] = comparison.reason;
         list.push_back(item);
     }
     return list;
@@ -168,11 +158,10 @@ void print_table(const BestLattice<I>& best, int digits) {
         const Basis<I> basis = best_basis(best);
         for (int i = 0; i < 3; ++i)
             std::cout << "basis e" << i + 1 << "     " << text(basis[i][0]) << ", " << text(basis[i][1]) << ", " << text(basis[i][2]) << "\n";
-        for (const FamilyEntry<I>& entry : best.families) {
-            if (entry.check.verdict != Outcome::proved || !entry.lattice.phi) continue;
-            const I gap = best_phi(best) - *entry.lattice.phi;
+        for (const FamilyComparison<I>& comparison : compare_families(best)) {
+            const FamilyEntry<I>& entry = *comparison.entry;
             std::cout << "  vs " << to_string(entry.lattice.family) << "      phi " << text(*entry.lattice.phi) << "  gap "
-                      << text(gap) << (certainly_positive(gap) ? "  beats" : "  ties") << "\n";
+                      << text(comparison.gap) << (comparison.relation == FamilyRelation::beats ? "  beats" : "  ties") << "\n";
         }
     }
     for (const FamilyEntry<I>& entry : best.families)

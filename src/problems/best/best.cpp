@@ -249,6 +249,24 @@ const FamilyEntry<I>* family_entry(const BestLattice<I>& best, Family family) {
     return nullptr;
 }
 
+template <class I>
+std::vector<FamilyComparison<I>> compare_families(const BestLattice<I>& best) {
+    std::vector<FamilyComparison<I>> comparisons;
+    const I& phi = best_phi(best);
+    for (std::size_t k = 0; k < best.families.size(); ++k) {
+        const FamilyEntry<I>& entry = best.families[k];
+        if (entry.check.verdict != Outcome::proved || !entry.lattice.phi) continue;
+        const I gap = phi - *entry.lattice.phi;
+        if (best.source == BestSource::family && best.index == k)
+            comparisons.push_back({&entry, gap, FamilyRelation::ties, "it is the best lattice"});
+        else if (certainly_positive(gap))
+            comparisons.push_back({&entry, gap, FamilyRelation::beats, ""});
+        else
+            comparisons.push_back({&entry, gap, FamilyRelation::ties, "phi not separated from the best lattice's at this precision"});
+    }
+    return comparisons;
+}
+
 template const DInterval& best_phi(const BestLattice<DInterval>&);
 template const Ball& best_phi(const BestLattice<Ball>&);
 template Basis<DInterval> best_basis(const BestLattice<DInterval>&);
@@ -259,5 +277,7 @@ template BestCertificate best_certificate(const BestLattice<DInterval>&);
 template BestCertificate best_certificate(const BestLattice<Ball>&);
 template const FamilyEntry<DInterval>* family_entry(const BestLattice<DInterval>&, Family);
 template const FamilyEntry<Ball>* family_entry(const BestLattice<Ball>&, Family);
+template std::vector<FamilyComparison<DInterval>> compare_families(const BestLattice<DInterval>&);
+template std::vector<FamilyComparison<Ball>> compare_families(const BestLattice<Ball>&);
 
 }  // namespace superpack

@@ -90,4 +90,18 @@ BestCertificate best_certificate(const BestLattice<I>& best);
 template <class I>
 const FamilyEntry<I>* family_entry(const BestLattice<I>& best, Family family);
 
+// Each family proved a packing at p (with its phi) against the best lattice: it "beats" the
+// family when the gap phi_best - phi_family is certainly positive, and "ties" otherwise, with the
+// reason (the family is the best lattice itself, or the two phi are not separated).
+enum class FamilyRelation { beats, ties };
+template <class I>
+struct FamilyComparison {
+    const FamilyEntry<I>* entry;
+    I gap;
+    FamilyRelation relation;
+    std::string reason;  // empty when it beats
+};
+template <class I>
+std::vector<FamilyComparison<I>> compare_families(const BestLattice<I>& best);
+
 }  // namespace superpack
