@@ -9,8 +9,8 @@
 
 namespace superpack {
 
-using sim::operator+;
-using sim::operator*;
+using dense::operator+;
+using dense::operator*;
 
 namespace {
 
@@ -18,7 +18,7 @@ using GridPoint = std::array<int, 3>;
 
 // ||u||_2p, scaled by the largest |u_i| first (it is 1 in the scaled sum, the others at most 1).
 double norm_2p(const Point3& u, double p) {
-    const double largest = sim::max_abs(u);
+    const double largest = dense::max_abs(u);
     double sum = 0;
     for (double x : u) sum += std::pow(std::fabs(x) / largest, 2 * p);
     return largest * std::pow(sum, 1 / (2 * p));
@@ -70,17 +70,17 @@ std::vector<std::array<int, 3>> SurfaceMesh::triangles() const {
 }
 
 Point3 superball_normal(double p, const Point3& x) {
-    const double largest = sim::max_abs(x);
+    const double largest = dense::max_abs(x);
     Point3 gradient;
     for (int c = 0; c < 3; ++c) gradient[c] = std::copysign(std::pow(std::fabs(x[c]) / largest, 2 * p - 1), x[c]);
     if (p == 0.5)  // the gradient's sign vector: 0 where x_c = 0, on an edge
         for (int c = 0; c < 3; ++c) gradient[c] = x[c] == 0 ? 0 : gradient[c];
-    return (1 / sim::norm(gradient)) * gradient;
+    return (1 / dense::norm(gradient)) * gradient;
 }
 
-Point3 PlacedParticle::turned(const Point3& body) const { return sim::apply(rotation, body); }
+Point3 PlacedParticle::turned(const Point3& body) const { return dense::apply(rotation, body); }
 
-Point3 PlacedParticle::operator()(const Point3& body) const { return center + sim::apply(rotation, body); }
+Point3 PlacedParticle::operator()(const Point3& body) const { return center + dense::apply(rotation, body); }
 
 PlacedParticle placed_particle(const PeriodicPacking& packing, std::size_t i) {
     PlacedParticle placed;

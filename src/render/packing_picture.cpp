@@ -22,14 +22,14 @@ constexpr double view_tilt = 58, view_turn = 32;
 constexpr unsigned colours[] = {0xe0603f, 0x3f86e0, 0xf0c030, 0x4cb56e, 0xa066d0, 0x2fc0bb, 0xe884b8, 0x9a7a50,
                                 0xaad04a, 0x6478e0, 0xf7922a, 0x35a898, 0xd05a86, 0x8895a2, 0xc0b04a, 0x78c0f0};
 
-using sim::cross;
-using sim::dot;
-using sim::operator+;
-using sim::operator-;
-using sim::operator*;
+using dense::cross;
+using dense::dot;
+using dense::operator+;
+using dense::operator-;
+using dense::operator*;
 
 // The fractional coordinates f of x = f . rows.
-Point3 fraction_of(const sim::Matrix3& rows, const Point3& x) { return sim::apply(sim::inverse(sim::transpose(rows)), x); }
+Point3 fraction_of(const dense::Matrix3& rows, const Point3& x) { return dense::apply(dense::inverse(dense::transpose(rows)), x); }
 
 // Which fundamental domain is drawn is a choice: the cell is translated so that the centres'
 // circular mean (per fractional coordinate) sits at its middle, so the particles of a cell lie
@@ -62,7 +62,7 @@ View view() {
     return v;
 }
 
-Point3 unit(const Point3& x) { return (1 / sim::norm(x)) * x; }
+Point3 unit(const Point3& x) { return (1 / dense::norm(x)) * x; }
 
 // Our own lighting (gnuplot 5.4's pm3d lighting picks each facet's side by itself and shades
 // rounded edges in patches): a light above and left of the eye, Lambert's law over an ambient
@@ -127,7 +127,7 @@ double fitting_scale(const Bounds& bounds, const View& v) {
 // The 12 edges of the parallelepiped of fractional coordinates origin + [0, size]^3 as line
 // segments: two points, then two blank lines (one blank line would make them a grid, whose
 // cross lines splot draws too).
-std::string box_edges(const sim::Matrix3& rows, const Point3& origin, double size, Bounds& bounds) {
+std::string box_edges(const dense::Matrix3& rows, const Point3& origin, double size, Bounds& bounds) {
     std::string text;
     for (int axis = 0; axis < 3; ++axis)
         for (int a : {0, 1})
@@ -138,7 +138,7 @@ std::string box_edges(const sim::Matrix3& rows, const Point3& origin, double siz
                 Point3 to = from;
                 to[axis] += size;
                 for (const Point3& f : {from, to}) {
-                    const Point3 x = sim::row_combination(rows, f);
+                    const Point3 x = dense::row_combination(rows, f);
                     bounds.add(x);
                     text += point_text(x, " ") + "\n";
                 }
@@ -174,7 +174,7 @@ std::string palette(std::size_t n) {
 }
 
 std::string script(const std::string& output, const PeriodicPacking& packing, const DInterval& phi) {
-    sim::Matrix3 rows;
+    dense::Matrix3 rows;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) rows[r][c] = packing.cell[r][c].get_d();
     const std::size_t n = packing.centers.size();
@@ -207,7 +207,7 @@ std::string script(const std::string& output, const PeriodicPacking& packing, co
             colour.push_back(" " + gnuplot::number(static_cast<double>(i) + lighting.shade(placed.turned(normal)), 6));
         for (int shift = 0; shift < 8; ++shift) {
             const Point3 image{fraction[0] + (shift & 1), fraction[1] + (shift >> 1 & 1), fraction[2] + (shift >> 2 & 1)};
-            placed.center = sim::row_combination(rows, image);
+            placed.center = dense::row_combination(rows, image);
             for (const std::vector<int>& face : surface.faces) {
                 for (std::size_t k = 0; k < face.size(); ++k) {
                     const Point3 x = placed(surface.vertices[face[k]]);

@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "superpack/problems/periodic/periodic_packing.hpp"
-#include "superpack/sim/vector3.hpp"
+#include "superpack/solve/dense3.hpp"
 
 namespace superpack {
 
-using Point3 = sim::Vector3;
+using Point3 = dense::Vector3;
 
 // The OBJ's grid: m = 24 (3458 vertices, 6912 triangles a particle).
 constexpr int default_mesh_resolution = 24;
@@ -45,7 +45,7 @@ Point3 superball_normal(double p, const Point3& x);
 // Particle i of the packing as a map of body points to space: centers[i] + R(q_i) x.
 struct PlacedParticle {
     Point3 center;
-    sim::Matrix3 rotation;  // R(q_i), body to space
+    dense::Matrix3 rotation;  // R(q_i), body to space
     Point3 operator()(const Point3& body) const;  // centre + R body
     Point3 turned(const Point3& body) const;      // R body
 };
