@@ -132,11 +132,12 @@ TEST_CASE("branch and bound: a budget leaves the boxes still queued unexamined, 
     }
 }
 
-// A driver with only what a run without a budget needs: no reasons (every leaf counts as 0) and
-// no leaves for unexamined boxes.
+// A driver with only what a run without a budget needs: one reason (single_reason: every leaf
+// counts as 0) and no leaves for unexamined boxes.
 struct MinimalDriver {
     using Box = Dyadic;
     using Leaf = ::Leaf;
+    static constexpr bool single_reason = true;
     std::vector<Leaf> leaves;
     Examined<Box, Leaf> examine(const Box& box, Visit&) const {
         if (box.depth == 3) return leaf_of<Box>(Leaf{box, holds_a_third});

@@ -22,8 +22,11 @@
 //   void collect(Leaf&& leaf);                                   every leaf, in the order they close
 // and, where needed:
 //   Leaf unexamined(const Box& box);     a box left when the run stopped early (a run with a box
-//                                        budget or a stop needs it; without it, such a run fails)
-//   std::size_t reason(const Leaf& leaf);  the leaf's reason, an index from 0 (without it, 0)
+//                                        budget is refused without it, and a stop fails)
+//   std::size_t reason(const Leaf& leaf);  the leaf's reason, an index from 0; a driver whose
+//                                        leaves have one reason says so instead, with
+//                                        `static constexpr bool single_reason = true;` (all count
+//                                        as 0), so that a misspelt reason does not compile
 //   double priority(const Box& box);     best first only: the least is taken first
 // With one thread the run is deterministic: depth first visits each box's first child (and its
 // whole subtree) before its second, and best first breaks ties as std::priority_queue does.
@@ -213,6 +216,10 @@ struct has_reason : std::false_type {};
 template <class Driver>
 struct has_reason<Driver, std::void_t<decltype(std::declval<Driver&>().reason(std::declval<const typename Driver::Leaf&>()))>>
     : std::true_type {};
+template <class Driver, class = void>
+struct has_single_reason : std::false_type {};
+template <class Driver>
+struct has_single_reason<Driver, std::void_t<decltype(Driver::single_reason)>> : std::bool_constant<Driver::single_reason> {};
 
 std::string tree_place(std::size_t index);
 std::vector<std::string> assemble_trees(std::vector<std::pair<std::string, std::string>>& records, std::size_t count);
@@ -225,9 +232,14 @@ class Search {
 
     Search(Driver& driver, const BranchOptions& options) : driver_(driver), options_(options), open_(options.order) {}
 
+    static_assert(has_reason<Driver>::value != has_single_reason<Driver>::value,
+                  "branch and bound: a driver gives its leaves' reasons or declares single_reason, not both");
+
     BranchResult<Box> run(const std::vector<Box>& start) {
         if (options_.order == BranchOrder::best_first && !has_priority<Driver>::value)
             throw std::logic_error("branch and bound: best first needs the driver's priority");
+        if (!has_unexamined<Driver>::value && options_.max_boxes != std::numeric_limits<long>::max())
+            throw std::logic_error("branch and bound: a box budget needs the driver's unexamined");
         BranchResult<Box> result;
         const std::size_t shards = static_cast<std::size_t>(std::max(1, options_.shards));
         for (std::size_t k = 0; k < start.size(); ++k)

@@ -45,6 +45,7 @@ template <class I, class LeafType, class Classify, class GiveUp>
 struct Driver {
     using Box = std::vector<I>;
     using Leaf = LeafType;
+    static constexpr bool single_reason = true;
     const Classify& classify;
     const GiveUp& give_up;
     const SubdivisionLimits& limits;

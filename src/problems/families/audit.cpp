@@ -190,6 +190,7 @@ struct AuditSpan {
 struct AuditDriver {
     using Box = AuditSpan;
     using Leaf = AuditPiece;
+    static constexpr bool single_reason = true;
     Family family;
     AuditBranch branch;
     const AuditSettings& settings;
