@@ -1,5 +1,6 @@
 // Vectors and 3x3 matrices in binary64: the one small dense linear algebra of the floating-point
-// guesses (the simulation layer, the lattice search, the critical search's preconditioners).
+// guesses (the simulation layer, the pictures of render/, the lattice search; the critical search
+// takes its types).
 // Guesses only: a packing or a bound is proved elsewhere with intervals, so plain doubles in
 // round-to-nearest are what they need: small, inline, and nothing clever.
 //
@@ -13,6 +14,7 @@
 // determinant(Matrix3) would silently take the place of geometry's determinant(Basis<T>) for a
 // Basis<double> (another formula, other roundings). Callers name what they use.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -34,6 +36,9 @@ inline Vector3 cross(const Vector3& a, const Vector3& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 inline double max_abs(const Vector3& a) { return std::fmax(std::fabs(a[0]), std::fmax(std::fabs(a[1]), std::fabs(a[2]))); }
+// The same but by std::max, as the lattice search and the chart's images have always taken it:
+// the two differ only when a[0] is NaN (then this is NaN, max_abs the largest other entry).
+inline double max_norm(const Vector3& a) { return std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])}); }
 
 inline Matrix3 identity_matrix() { return {Vector3{1, 0, 0}, Vector3{0, 1, 0}, Vector3{0, 0, 1}}; }
 

@@ -30,13 +30,12 @@ std::vector<SignedPermutation> signed_permutations() {
     return all;
 }
 
+using dense::max_norm;
 using dense::Vector3;
 
 Vector3 permuted(const Vector3& u, const SignedPermutation& s) {
     return {s.sign[0] * u[s.perm[0]], s.sign[1] * u[s.perm[1]], s.sign[2] * u[s.perm[2]]};
 }
-
-double max_norm(const Vector3& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
 
 bool close(const Vector3& a, const Vector3& b) {
     return std::fabs(a[0] - b[0]) < tolerance && std::fabs(a[1] - b[1]) < tolerance && std::fabs(a[2] - b[2]) < tolerance;

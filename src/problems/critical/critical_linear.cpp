@@ -3,19 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "superpack/geometry/lattice_basis.hpp"
+
 namespace superpack {
 
-namespace {
-
-double determinant3(const Matrix3& a) {
-    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-}
-
-}  // namespace
-
+// Determinants by geometry's cofactor expansion (lattice_basis.hpp), the one formula of a basis.
 Vector3 solve3(const Matrix3& m, const Vector3& r) {
-    const double d = determinant3(m);
+    const double d = determinant(m);
     double scale = 0;
     for (const Vector3& row : m)
         for (double x : row) scale = std::max(scale, std::fabs(x));
@@ -24,7 +18,7 @@ Vector3 solve3(const Matrix3& m, const Vector3& r) {
     for (int i = 0; i < 3; ++i) {
         Matrix3 a = m;
         for (int k = 0; k < 3; ++k) a[k][i] = r[k];
-        y[i] = determinant3(a) / d;
+        y[i] = determinant(a) / d;
     }
     return y;
 }

@@ -17,6 +17,7 @@ namespace {
 
 using Triple = std::array<long, 3>;
 using dense::dot;
+using dense::max_norm;
 using dense::Vector3;
 
 // One coefficient triple per +-pair with every |c_i| <= 2: after reduction the shortest vectors
@@ -40,8 +41,6 @@ Vector3 combine(const Triple& c, const DoubleBasis& b) {
     for (int j = 0; j < 3; ++j) v[j] = c[0] * b[0][j] + c[1] * b[1][j] + c[2] * b[2][j];
     return v;
 }
-
-double max_norm(const Vector3& v) { return std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])}); }
 
 // The most coefficient pairs for_each_in_cube walks: a basis that needs more is so skewed that
 // the search treats it as no packing.
