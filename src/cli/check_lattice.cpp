@@ -9,6 +9,7 @@
 #include "superpack/cert/family_certificate.hpp"
 #include "superpack/cert/star_lattice_certificate.hpp"
 #include "superpack/problems/families/family_lattice_check.hpp"
+#include "superpack/problems/families/family_registry.hpp"
 
 namespace superpack::cli {
 
@@ -68,9 +69,9 @@ int run(const CheckLatticeOptions& options) {
     const Rational p = parse_p(options.p);
     if (options.basis.size() > 1000) throw InputError("--basis: at most 1000 characters, got " + std::to_string(options.basis.size()));
     if (!options.certificate.empty()) {
-        // The insertion's lattice is exact (Minkowski's basis): its check is certified as a basis.
+        // A family whose basis is exact (the insertion's, Minkowski's) has its check certified as a basis.
         const std::optional<Family> family = options.family.empty() ? std::nullopt : std::optional<Family>(parse_family(options.family));
-        if (family == Family::MinkowskiInsertion)
+        if (family && family_definition(*family).exact_basis)
             require_in_domain(*family, p);
         else
             require_certificate_kind(p, family);
@@ -92,9 +93,9 @@ int run(const CheckLatticeOptions& options) {
             document["family"] = to_string(family);
             if (!options.certificate.empty() && check.verdict != Outcome::undecided)
                 write_certificate_or_fail(options.certificate, field, digits, max_digits, [&] {
-                    return family == Family::MinkowskiInsertion
-                               ? exact_lattice_certificate(check, minkowski_octahedron_basis(), p, field, digits)
-                               : family_lattice_check_certificate(lattice, check, p, field, digits);
+                    const auto exact_basis = family_definition(family).exact_basis;
+                    return exact_basis ? exact_lattice_certificate(check, exact_basis(), p, field, digits)
+                                       : family_lattice_check_certificate(lattice, check, p, field, digits);
                 });
         } else {
             const Basis<Rational> basis = parse_basis(options.basis);

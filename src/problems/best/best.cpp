@@ -238,7 +238,7 @@ template <class I>
 BestCertificate best_certificate(const BestLattice<I>& best) {
     if (best.local && best.local->verdict == Outcome::proved) return BestCertificate::local_optimum;
     if (best.source == BestSource::search) return BestCertificate::search_lattice;
-    if (best.families[best.index].lattice.family == Family::MinkowskiInsertion) return BestCertificate::insertion_lattice;
+    if (family_definition(best.families[best.index].lattice.family).exact_basis) return BestCertificate::insertion_lattice;
     return BestCertificate::family_lattice;
 }
 
