@@ -46,8 +46,9 @@
 #
 # The OLD side is cached: OUT_DIR/old/binary.sha256 holds the sha256 of OLD_BUILD's superpack and
 # superpack-verify, and OUT_DIR/old/recipe.sha256 that of the commands above (this script's
-# recipe and make-proofs.sh); when both match and OUT_DIR/old/complete exists, the old side is
-# reused and only the new side runs. The sides run one after the other, not in parallel.
+# recipe, the function that runs a side, and make-proofs.sh); when both match and
+# OUT_DIR/old/complete exists, the old side is reused and only the new side runs. The sides run
+# one after the other, not in parallel.
 set -euo pipefail
 
 # The whole script is one block, read before it runs: a checkout that changes this file during a
@@ -132,7 +133,7 @@ run_side() {
 }
 
 binary_stamp() { (cd "$1" && sha256sum superpack superpack-verify); }
-recipe_stamp() { { echo "$recipe"; cat "$root/scripts/make-proofs.sh"; } | sha256sum; }
+recipe_stamp() { { echo "$recipe"; declare -f run_side; cat "$root/scripts/make-proofs.sh"; } | sha256sum; }
 
 old_dir=$out/old
 new_dir=$out/new

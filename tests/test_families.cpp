@@ -103,7 +103,7 @@ TEST_CASE("C0 and C1 at p = 150, 10^4 and 10^6: certified in both backends, the 
         }
 }
 
-// density, check-lattice and best call enclose_family through within_contract: at a legal p whose
+// density and check-lattice call enclose_family through within_contract (best, find_best_lattice): at a legal p whose
 // binary64 enclosure touches 1/2 a power's contract refuses, and the driver's answer is the
 // undecided value with the refusal's words (the command prints them, exit 4), not an exception.
 TEST_CASE("a driver whose contract refuses an enclosure answers undecided as a value") {

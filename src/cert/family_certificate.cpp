@@ -93,7 +93,7 @@ const FamilyProof& family_proof(Family family) {
         // The insertion has no family certificate of its own: its lattice (Minkowski's, exact) is
         // certified through the star-lattice-check kind, which takes one exact p.
         {Family::MinkowskiInsertion, nullptr, nullptr,
-         "--certificate: no certificate kind for the family minkowski-insertion (its basis is exact, the same for every p); "
+         "--certificate: no certificate kind for the family minkowski-insertion (its basis is exact and the same for every p: there is no parameter to prove); "
          "check-lattice --family minkowski-insertion --certificate certifies its exact basis"},
     };
     for (const FamilyProof& proof : proofs)

@@ -2,7 +2,8 @@
 //              [--max-collisions C] [--pressure-limit L] [--json] [--xyz FILE] [--mesh FILE.obj]
 //              [--png FILE.png] [--certificate FILE]
 // Event-driven molecular dynamics of growing superballs (Donev, Torquato & Stillinger;
-// sim/event_md.hpp) until jammed, and the proof of the packing it ends with (final_packing.hpp):
+// sim/event_md.hpp) until jammed, and the proof of the packing it ends with
+// (problems/periodic/end_state.hpp):
 // floating point guesses, intervals prove.
 #include <chrono>
 #include <memory>

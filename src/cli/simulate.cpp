@@ -1,7 +1,7 @@
 // superpack simulate --p P --n N [--steps S] [--seed K] [--init lattice|random|FAMILY] [--json]
 //                    [--xyz FILE] [--mesh FILE.obj] [--png FILE.png] [--certificate FILE]
 // The paper's stochastic optimizer (sim/shrinking_cell.hpp) for N superballs per cell, and the
-// proof of the packing it ends with (problems/periodic/periodic_packing.hpp): floating point guesses,
+// proof of the packing it ends with (problems/periodic/end_state.hpp): floating point guesses,
 // intervals prove.
 #include <chrono>
 #include <memory>

@@ -1,6 +1,6 @@
 // Reading back what shards of `superpack critical` wrote: their JSON documents (--shard i/n
-// --json) for --merge, and their critical-lattice certificates for --cover. Beside the
-// certificate writers, whose documents these are; the command only parses and prints.
+// --json) for --merge, and their critical-lattice certificates for --cover. In cert, beside the
+// writers of those certificates, so that the command only parses and prints.
 #pragma once
 #include <string>
 #include <vector>
