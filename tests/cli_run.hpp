@@ -48,6 +48,11 @@ inline Run run(const std::string& arguments, const std::string& directory = "", 
     return result;
 }
 
+// `run` under an address-space limit of `kib` KiB (ulimit -v), where memory runs out.
+inline Run run_with_memory_limit(const std::string& arguments, long kib) {
+    return run(arguments, "", "ulimit -v " + std::to_string(kib) + " &&");
+}
+
 // Each case (arguments, a piece of the message): `command arguments`, with and without --json,
 // exits 2 with one line on stderr holding the piece, before the work starts (no "certifying"
 // on stderr: simulate and md say that first), with stdout empty, or with --json one document

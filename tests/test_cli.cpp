@@ -183,7 +183,7 @@ TEST_CASE("critical --around R --certificate FILE: the boxes around C1's images,
     check_error("critical --cover " + file + " --certificate " + scratch.path + "/cover.json", 2, "4 start boxes, fewer than the 168");
     check_error("verify --threads 65 " + file, 2, "--threads: 1 to 64");
     check_error("critical --cover " + file, 2, "--certificate FILE is required");
-    check_error("critical --cover " + file + " --certificate /tmp/elsewhere/cover.json", 2, "not in the directory");
+    check_error("critical --cover " + file + " --certificate /tmp/cover.json", 2, "not in the directory");
     // D14 at p = 3/5 has seven contact pairs: no closing region in the six-pair chart (after the
     // progress line of best).
     const Run seven = run("critical --p 0.6 --around 1e-5");

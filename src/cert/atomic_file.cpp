@@ -84,6 +84,29 @@ void sync_directory(const std::string& path, const std::string& target) {
     if (!synced) throw FileError("wrote '" + target + "' but cannot sync its directory: " + reason);
 }
 
+// The directory exists, and the name is new or a regular file (lstat).
+void require_target_rules(const std::string& path) {
+    const Location location = locate(path);
+    struct stat status {};
+    if (stat(location.directory.c_str(), &status) != 0) {
+        if (errno == ENOENT) throw FileError("cannot write '" + path + "': directory '" + location.directory + "' does not exist");
+        throw FileError("cannot write '" + path + "': directory '" + location.directory + "': " + system_error_text());
+    }
+    if (!S_ISDIR(status.st_mode))
+        throw FileError("cannot write '" + path + "': '" + location.directory + "' is not a directory");
+    if (lstat(path.c_str(), &status) != 0) {
+        if (errno == ENOENT) return;
+        throw FileError("cannot write '" + path + "': " + system_error_text());
+    }
+    if (S_ISLNK(status.st_mode))
+        throw FileError("refusing to write '" + path + "': it is a symbolic link (superpack replaces regular files only; "
+                        "remove the link or name the file itself)");
+    if (!S_ISREG(status.st_mode))
+        throw FileError("refusing to write '" + path + "': it exists and is not a regular file (" +
+                        (S_ISDIR(status.st_mode) ? "a directory" : S_ISFIFO(status.st_mode) ? "a FIFO"
+                         : S_ISSOCK(status.st_mode) ? "a socket" : "a device") + ")");
+}
+
 // A fresh exclusive temporary file beside the target, open, with the mode a new file gets.
 struct Temporary {
     std::string path;
@@ -91,7 +114,7 @@ struct Temporary {
 };
 
 Temporary create_temporary(const std::string& target) {
-    require_writable_target(target);
+    require_target_rules(target);
     const Location location = locate(target);
     remove_stale_temporaries(location);
     std::string temporary = location.directory + "/" + location.name + partial_marker + std::to_string(getpid()) + "-XXXXXX";
@@ -140,25 +163,11 @@ bool same_file(const std::string& path, int descriptor) {
 }  // namespace
 
 void require_writable_target(const std::string& path) {
-    const Location location = locate(path);
-    struct stat status {};
-    if (stat(location.directory.c_str(), &status) != 0) {
-        if (errno == ENOENT) throw FileError("cannot write '" + path + "': directory '" + location.directory + "' does not exist");
-        throw FileError("cannot write '" + path + "': directory '" + location.directory + "': " + system_error_text());
-    }
-    if (!S_ISDIR(status.st_mode))
-        throw FileError("cannot write '" + path + "': '" + location.directory + "' is not a directory");
-    if (lstat(path.c_str(), &status) != 0) {
-        if (errno == ENOENT) return;
-        throw FileError("cannot write '" + path + "': " + system_error_text());
-    }
-    if (S_ISLNK(status.st_mode))
-        throw FileError("refusing to write '" + path + "': it is a symbolic link (superpack replaces regular files only; "
-                        "remove the link or name the file itself)");
-    if (!S_ISREG(status.st_mode))
-        throw FileError("refusing to write '" + path + "': it exists and is not a regular file (" +
-                        (S_ISDIR(status.st_mode) ? "a directory" : S_ISFIFO(status.st_mode) ? "a FIFO"
-                         : S_ISSOCK(status.st_mode) ? "a socket" : "a device") + ")");
+    // The rules say nothing of permissions or of file systems that take no new file (read-only,
+    // /proc): a temporary created and removed beside the target does.
+    const Temporary probe = create_temporary(path);
+    close(probe.descriptor);
+    unlink(probe.path.c_str());
 }
 
 void write_atomically(const std::string& path, const std::string& content) {

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/problems/families/audit.hpp"
 #include "superpack/cert/audit_certificate.hpp"
@@ -17,7 +18,7 @@ namespace {
 struct AuditOptions {
     std::string family, p_range, output_directory = "out", certificate;
     bool second_root = false, json = false;
-    int pieces = 0, depth = -1;  // 0 / -1: the family's default
+    int pieces = 0, depth = -1;  // 0 / -1: the family's default (the options' ranges exclude both)
 };
 
 // Limits (README): --pieces and --depth, and AuditSettings::max_pieces for the whole audit.
@@ -80,11 +81,6 @@ std::vector<Family> checked_families(const AuditOptions& options) {
         throw Failure(exit_usage, "--certificate needs one --family and the published lattice (no --second-root)");
     if (!options.p_range.empty() && families.size() != 1)
         throw Failure(exit_usage, "--p-range needs one --family (the families' domains differ)");
-    if (options.pieces != 0 && (options.pieces < 1 || options.pieces > max_initial_pieces))
-        throw Failure(exit_usage, "--pieces must be from 1 to " + std::to_string(max_initial_pieces) + ", got " +
-                                      std::to_string(options.pieces));
-    if (options.depth != -1 && (options.depth < 0 || options.depth > max_depth))
-        throw Failure(exit_usage, "--depth must be from 0 to " + std::to_string(max_depth) + ", got " + std::to_string(options.depth));
     return families;
 }
 
@@ -129,8 +125,9 @@ int run(const AuditOptions& options, bool default_directory) {
     const std::vector<AuditRange> ranges = audit_ranges(options, families);
     // Every path is checked before hours of work: the default out/ is created, a named directory must exist.
     if (default_directory) create_default_directory(options.output_directory);
-    for (Family family : families) require_writable_target(audit_file(options, family));
-    if (!options.certificate.empty()) require_writable_target(options.certificate);
+    std::vector<OutputPath> outputs{{"--certificate", options.certificate}};
+    for (Family family : families) outputs.push_back({"--output-directory", audit_file(options, family)});
+    require_output_paths(outputs);
     require_rounding_self_test();
     Json document = header_json("audit", DoubleField{}, 15);
     Json audits = Json::array();
@@ -183,15 +180,17 @@ void add_audit(CLI::App& app) {
     command->add_option("--p-range", options->p_range, "a:b exact, inside the family's domain (default: the claimed range); needs --family");
     command->add_flag("--second-root", options->second_root, "O1: audit the lattice of the other real root of Eq. (12)");
     command->add_option("--pieces", options->pieces,
-                        "initial pieces per range, 1 to " + std::to_string(max_initial_pieces) + " (default 16; O1: 300; D14: 32)");
+                        "initial pieces per range, 1 to " + std::to_string(max_initial_pieces) + " (default 16; O1: 300; D14: 32)")
+        ->check(CLI::Range(1, max_initial_pieces));
     command->add_option("--depth", options->depth,
                         "bisections of an undecided piece, 0 to " + std::to_string(max_depth) + " (default 12; O1: 3; D14: 12); at most " +
-                            std::to_string(AuditSettings{}.max_pieces) + " pieces in all");
-    CLI::Option* directory = command->add_option("--output-directory", options->output_directory,
-                                                 "an existing directory for audit-<family>.json (default out, created if missing)");
+                            std::to_string(AuditSettings{}.max_pieces) + " pieces in all")
+        ->check(CLI::Range(0, max_depth));
+    CLI::Option* directory = add_output_option(*command, "--output-directory", options->output_directory,
+                                               "an existing directory for audit-<family>.json (default out, created if missing)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
-    command->add_option("--certificate", options->certificate,
-                        "with one --family: write a certificate of the piece verdicts (replay it with `superpack verify FILE`)");
+    add_output_option(*command, "--certificate", options->certificate,
+                      "with one --family: write a certificate of the piece verdicts (replay it with `superpack verify FILE`)");
     command->callback([options, directory] { run(*options, directory->count() == 0); });
 }
 

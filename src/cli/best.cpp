@@ -7,8 +7,8 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/arith/decimal.hpp"
-#include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/certificate.hpp"
 #include "superpack/cert/family_certificate.hpp"
 #include "superpack/cert/local_optimum_certificate.hpp"
@@ -22,7 +22,7 @@ namespace {
 
 struct BestCommandOptions {
     std::string p, digits, certificate, scan, plot;
-    unsigned seed = 1;
+    std::uint32_t seed = 1;
     int starts = 16;
     bool json = false, csv = false;
 };
@@ -269,6 +269,7 @@ PlotAxes scan_axes(const std::vector<Rational>& values, const std::vector<PlotSe
 int run_scan(const BestCommandOptions& options) {
     const std::vector<Rational> values = parse_scan(options.scan, max_scan_values);
     for (const Rational& p : values) require_best_domain(p);
+    require_output_paths({{"--plot", options.plot}});
     if (!options.plot.empty()) require_plottable(options.plot);
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
@@ -327,7 +328,7 @@ int run(const BestCommandOptions& options) {
     const Rational p = parse_p(options.p);
     require_best_domain(p);
     if (!options.certificate.empty()) {
-        require_writable_target(options.certificate);
+        require_output_paths({{"--certificate", options.certificate}});
         require_rounding_self_test();
     }
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
@@ -374,15 +375,14 @@ void add_best(CLI::App& app) {
                         "a:b:h: one row per p = a, a + h, ... <= b (at most " + std::to_string(max_scan_values) +
                             "); needs --csv or --plot");
     command->add_flag("--csv", options->csv, "print the scan as CSV (else a table)");
-    command->add_option("--plot", options->plot,
-                        "with --scan: draw phi of the best lattice and of every family against p into this PNG (gnuplot)");
-    command->add_option("--digits", options->digits,
-                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
+    add_output_option(*command, "--plot", options->plot,
+                      "with --scan: draw phi of the best lattice and of every family against p into this PNG (gnuplot)");
+    add_digits_option(*command, options->digits, max_digits);
     command->add_flag("--json", options->json, "print one JSON document on stdout");
-    command->add_option("--certificate", options->certificate,
-                        "write the certificate: local-optimum when the critical lattice is locally optimal, else the "
-                        "best lattice's family-lattice, lattice-check or (below p = 1/2) star-lattice-check claim");
-    command->add_option("--seed", options->seed, "seed of the search's random starts and directions (default 1)");
+    add_output_option(*command, "--certificate", options->certificate,
+                      "write the certificate: local-optimum when the critical lattice is locally optimal, else the "
+                      "best lattice's family-lattice, lattice-check or (below p = 1/2) star-lattice-check claim");
+    add_seed_option(*command, options->seed, "seed of the search's random starts and directions (default 1)");
     command->add_option("--starts", options->starts,
                         "random starts besides the families, 0 to " + std::to_string(max_starts) + " (default 16)");
     command->callback([options] { run(*options); });

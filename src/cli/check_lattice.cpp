@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/arith/decimal.hpp"
-#include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/audit_certificate.hpp"
 #include "superpack/cert/family_certificate.hpp"
 #include "superpack/cert/star_lattice_certificate.hpp"
@@ -75,7 +75,7 @@ int run(const CheckLatticeOptions& options) {
             require_in_domain(*family, p);
         else
             require_certificate_kind(p, family);
-        require_writable_target(options.certificate);
+        require_output_paths({{"--certificate", options.certificate}});
         require_rounding_self_test();
     }
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
@@ -128,11 +128,10 @@ void add_check_lattice(CLI::App& app) {
     command->add_option("--p", options->p, std::string("deformation parameter p > 0 (below 1/2 with --basis only: the star-body overlap test): a decimal or a fraction (") + supported_p_text + ")")->required();
     command->add_option("--basis", options->basis, "exact basis rows \"a,b,c; d,e,f; g,h,i\" (decimals or fractions)");
     command->add_option("--family", options->family, "C0, C1, O0, O1, D14, S6 or minkowski-insertion (its certified enclosures)");
-    command->add_option("--digits", options->digits,
-                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
+    add_digits_option(*command, options->digits, max_digits);
     command->add_flag("--json", options->json, "print one JSON document on stdout");
-    command->add_option("--certificate", options->certificate,
-                        "write a certificate of the verdict (replay it with `superpack verify FILE`); nothing when undecided");
+    add_output_option(*command, "--certificate", options->certificate,
+                      "write a certificate of the verdict (replay it with `superpack verify FILE`); nothing when undecided");
     command->callback([options] { run(*options); });
 }
 

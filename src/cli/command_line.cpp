@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <new>
+#include <system_error>
 
 #include "common.hpp"
+#include "memory_reserve.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/certificate.hpp"
 #include "superpack/cert/version.hpp"
@@ -63,6 +65,7 @@ CommandOutcome run_command_line(int argc, char** argv) {
     outcome.command = command_name(argc, argv);
     outcome.json = std::any_of(argv + 1, argv + argc, [](const char* argument) { return std::string(argument) == "--json"; });
     forget_printed_json();
+    const MemoryReserve reserve;
     const auto fail = [&outcome](int code, const std::string& message) {
         outcome.code = code;
         outcome.message = message;
@@ -90,6 +93,13 @@ CommandOutcome run_command_line(int argc, char** argv) {
         fail(exit_undecided, undecided_at_precision(domain_error.what(), 0, 0));
     } catch (const std::bad_alloc&) {
         fail(exit_undecided, "undecided: out of memory");
+    } catch (const std::system_error& error) {
+        // A thread that cannot start (pthread_create: EAGAIN, as under ulimit -v) is out of
+        // resources like bad_alloc; any other system error is a bug.
+        if (error.code() == std::errc::resource_unavailable_try_again)
+            fail(exit_undecided, std::string("undecided: out of memory or threads (") + error.what() + ")");
+        else
+            fail(exit_internal, error.what());
     } catch (const std::exception& bug) {
         fail(exit_internal, bug.what());
     }

@@ -55,6 +55,30 @@ long parse_digits(const std::string& text, long maximum) {
     return digits;
 }
 
+void add_digits_option(CLI::App& command, std::string& digits, long maximum) {
+    const CLI::Validator whole_digits(
+        [maximum](std::string& text) {
+            parse_digits(text, maximum);
+            return std::string();
+        },
+        "", "digits");
+    command.add_option("--digits", digits,
+                       "significant digits, 1 to " + std::to_string(maximum) + " (Arb balls); default: binary64 intervals")
+        ->check(whole_digits);
+}
+
+std::uint32_t parse_seed(const std::string& text) {
+    const bool whole = !text.empty() && text.size() <= 10 && text.find_first_not_of("0123456789") == std::string::npos;
+    if (!whole || std::stoull(text) > UINT32_MAX)
+        throw InputError(std::string("--seed: a whole number from ") + seed_range_text + ", got '" + text.substr(0, 30) + "'");
+    return static_cast<std::uint32_t>(std::stoull(text));
+}
+
+void add_seed_option(CLI::App& command, std::uint32_t& seed, const std::string& help) {
+    command.add_option_function<std::string>(
+        "--seed", [&seed](const std::string& text) { seed = parse_seed(text); }, help + "; " + seed_range_text);
+}
+
 std::string undecided_at_precision(const std::string& what, long digits, long maximum_digits) {
     const std::string precision = digits == 0 ? "binary64" : std::to_string(digits) + "-digit";
     std::string message = "undecided at " + precision + " precision (" + what +

@@ -2,6 +2,7 @@
 // No mathematics lives in src/cli/: each subcommand parses, calls one driver, prints.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <functional>
 #include <iostream>
 #include <optional>
@@ -48,6 +49,16 @@ Rational parse_p(const std::string& text, const std::string& option = "--p");
 std::vector<Rational> parse_scan(const std::string& text, std::size_t max_values);
 // --digits: a whole number from 1 to `maximum` (each command states its own).
 long parse_digits(const std::string& text, long maximum);
+// Adds --digits, held as typed in `digits` (with_field reads it; empty: not given), refused when
+// parsed unless parse_digits takes it: an empty --digits is no request for binary64.
+void add_digits_option(CLI::App& command, std::string& digits, long maximum);
+
+// The one seed range of every command (best, simulate, md): 0 to 2^32 - 1, what best's search
+// takes; a seed is typed as a whole number, so "-1" or "1e26" is refused, never wrapped.
+inline const char* const seed_range_text = "0 to 4294967295 (2^32 - 1)";
+std::uint32_t parse_seed(const std::string& text);
+// Adds --seed, parsed by parse_seed into `seed`; `help` says what it seeds.
+void add_seed_option(CLI::App& command, std::uint32_t& seed, const std::string& help);
 
 // The message of an answer left undecided because a function's contract refused an
 // enclosure (too wide at this precision), with the precision to try next

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/arith/enclosure_json.hpp"
 #include "superpack/cert/critical_certificate.hpp"
 #include "superpack/cert/critical_shards.hpp"
@@ -225,6 +226,7 @@ double parse_around(const std::string& text) {
 }
 
 int run(const CriticalCommandOptions& command) {
+    require_output_paths({{"--certificate", command.certificate}});
     if (!command.cover.empty()) {
         run_cover(command);
         return exit_ok;
@@ -274,7 +276,8 @@ void add_critical(CLI::App& app) {
         "critical", "A certified upper bound on the lattice packing density at p (branch and bound over Minkowski's configurations)");
     command->add_option("--p", options->p, "deformation parameter 1/2 < p <= 10: a decimal or a fraction (required unless --merge)");
     command->add_option("--gap", options->gap,
-                        "relative gap 0 <= G < 1/2: prove |det| >= (1 - G) |det| of the best lattice (default 0)");
+                        "relative gap 0 <= G < 1/2 and G <= 1 - phi of the best lattice at p (T >= V(K); 0.13 at p = 2): "
+                        "prove |det| >= T = (1 - G) |det| of the best lattice (default 0)");
     command->add_option("--threads", options->threads, "worker threads, 1 to " + std::to_string(max_threads) + " (default 1)");
     command->add_option("--shard", options->shard,
                         "i/n: only the start boxes whose index is i mod n (0 <= i < n <= the start boxes, " +
@@ -296,9 +299,9 @@ void add_critical(CLI::App& app) {
     command->add_option("--around", options->around,
                         "R: instead of the whole domain, the chart boxes of half-width 0 < R <= 1/100 around the images "
                         "of the best lattice's closing region");
-    command->add_option("--certificate", options->certificate,
-                        "FILE: write the critical-lattice certificate (every tree, replayed by the checker first; at "
-                        "most 256 MiB: --around, or a shard at --split K, whose certificates --cover joins)");
+    add_output_option(*command, "--certificate", options->certificate,
+                      "FILE: write the critical-lattice certificate (every tree, replayed by the checker first; at "
+                      "most 256 MiB: --around, or a shard at --split K, whose certificates --cover joins)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
 }

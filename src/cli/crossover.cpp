@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/arith/decimal.hpp"
-#include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/crossover_certificate.hpp"
 #include "superpack/problems/crossover/crossover_json.hpp"
 
@@ -68,7 +68,7 @@ int run(const CrossoverOptions& options) {
     if (options.kind != "cubic" && options.kind != "octahedral")
         throw Failure(exit_usage, "crossover: expected 'cubic' or 'octahedral', got '" + options.kind + "'");
     if (!options.certificate.empty()) {
-        require_writable_target(options.certificate);
+        require_output_paths({{"--certificate", options.certificate}});
         require_rounding_self_test();
     }
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
@@ -118,11 +118,10 @@ void add_crossover(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "crossover", "Certified crossover p*_c (C0 = C1, unique on [1, 10]) or p*_o (Eq. 6, O0 meets O1)");
     command->add_option("kind", options->kind, "cubic or octahedral")->required();
-    command->add_option("--digits", options->digits,
-                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default binary64");
+    add_digits_option(*command, options->digits, max_digits);
     command->add_flag("--json", options->json, "print one JSON document on stdout");
-    command->add_option("--certificate", options->certificate,
-                        "write a certificate of the crossover (replay it with `superpack verify FILE`); nothing when undecided");
+    add_output_option(*command, "--certificate", options->certificate,
+                      "write a certificate of the crossover (replay it with `superpack verify FILE`); nothing when undecided");
     command->callback([options] { run(*options); });
 }
 

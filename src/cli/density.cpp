@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/arith/decimal.hpp"
-#include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/family_certificate.hpp"
 #include "superpack/problems/families/family_lattice_check.hpp"
 
@@ -75,7 +75,7 @@ int run(const DensityOptions& options) {
     require_in_domain(family, p);
     if (!options.certificate.empty()) {
         require_certificate_kind(p, family);
-        require_writable_target(options.certificate);
+        require_output_paths({{"--certificate", options.certificate}});
         require_rounding_self_test();
     }
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
@@ -123,10 +123,9 @@ void add_density(CLI::App& app) {
     CLI::App* command = app.add_subcommand("density", "Certified density of one lattice family at one p");
     command->add_option("--family", options->family, "C0, C1 (p >= 1), O0 (1/2 < p <= 1), O1 (p >= 1/2), D14 (1/2 <= p <= 1), S6 (ln3/ln4 < p < 1) or minkowski-insertion (0 < p <= 1/2)")->required();
     command->add_option("--p", options->p, std::string("deformation parameter: a decimal (1.15) or a fraction (23/20); ") + supported_p_text)->required();
-    command->add_option("--digits", options->digits,
-                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
-    command->add_option("--certificate", options->certificate,
-                        "write a certificate of the density (replay it with `superpack verify FILE`)");
+    add_digits_option(*command, options->digits, max_digits);
+    add_output_option(*command, "--certificate", options->certificate,
+                      "write a certificate of the density (replay it with `superpack verify FILE`)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->callback([options] { run(*options); });
 }

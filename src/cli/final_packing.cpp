@@ -1,5 +1,6 @@
 #include "final_packing.hpp"
 
+#include "output_paths.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/periodic_certificate.hpp"
 #include "superpack/render/packing_files.hpp"
@@ -20,21 +21,20 @@ std::string bracketed(const DInterval& x) {
 }  // namespace
 
 void add_packing_file_options(CLI::App& command, PackingFiles& files) {
-    command.add_option("--xyz", files.xyz, "write the certified packing as extended XYZ (OVITO reads its superquadric shapes)");
-    command.add_option("--mesh", files.mesh,
-                       "write the certified packing as a triangle mesh (Wavefront OBJ): each particle of the cell a closed "
-                       "surface of " + std::to_string(12 * default_mesh_resolution * default_mesh_resolution) +
-                           " triangles (a cube-sphere grid of 6 x " + std::to_string(default_mesh_resolution) + " x " +
-                           std::to_string(default_mesh_resolution) + " squares)");
-    command.add_option("--png", files.png,
-                       "draw the certified packing into a PNG (gnuplot): a 2 x 2 x 2 block of cells, each particle shaded "
-                       "in the colour of its index in the cell, the cell's edges drawn");
-    command.add_option("--certificate", files.certificate, "write a periodic-packing certificate (replay it with `superpack verify FILE`)");
+    add_output_option(command, "--xyz", files.xyz, "write the certified packing as extended XYZ (OVITO reads its superquadric shapes)");
+    add_output_option(command, "--mesh", files.mesh,
+                      "write the certified packing as a triangle mesh (Wavefront OBJ): each particle of the cell a closed "
+                      "surface of " + std::to_string(12 * default_mesh_resolution * default_mesh_resolution) +
+                          " triangles (a cube-sphere grid of 6 x " + std::to_string(default_mesh_resolution) + " x " +
+                          std::to_string(default_mesh_resolution) + " squares)");
+    add_output_option(command, "--png", files.png,
+                      "draw the certified packing into a PNG (gnuplot): a 2 x 2 x 2 block of cells, each particle shaded "
+                      "in the colour of its index in the cell, the cell's edges drawn");
+    add_output_option(command, "--certificate", files.certificate, "write a periodic-packing certificate (replay it with `superpack verify FILE`)");
 }
 
 void require_packing_files(const PackingFiles& files) {
-    for (const std::string* path : {&files.xyz, &files.mesh, &files.certificate})
-        if (!path->empty()) require_writable_target(*path);
+    require_output_paths({{"--xyz", files.xyz}, {"--mesh", files.mesh}, {"--png", files.png}, {"--certificate", files.certificate}});
     if (!files.png.empty()) require_plottable(files.png);
 }
 

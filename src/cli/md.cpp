@@ -21,7 +21,7 @@ struct MdOptions {
     std::string p, init = "random", cell = "fixed";
     int particles = 100;
     double growth = 0.01;
-    unsigned long long seed = 1;
+    std::uint32_t seed = 1;
     long max_collisions = 20000000;
     double pressure_limit = 1e6;
     bool json = false;
@@ -212,7 +212,7 @@ void add_md(CLI::App& app) {
     command->add_option("--n", options->particles, "particles per cell, 2 to 256 (default 100)");
     command->add_option("--growth", options->growth,
                         "growth rate G = da/dt of the bodies' scale a (mass 1, kT = 1; dD/dt = 2G for spheres), 1e-7 to 1 (default 0.01)");
-    command->add_option("--seed", options->seed, "random seed (default 1): the same seed gives the same run");
+    add_seed_option(*command, options->seed, "random seed (default 1): the same seed gives the same run");
     command->add_option("--init", options->init,
                         "start: random (density 0.1; default), fcc (cube-aligned FCC), or a family C0, C1, O0, O1, D14, S6; a lattice "
                         "start grows from 0.9 of its largest free scale (unsaturated)");

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/cert/atomic_file.hpp"
 #include "superpack/arith/contract.hpp"
 #include "superpack/arith/decimal.hpp"
@@ -85,7 +86,7 @@ int run(const ReportOptions& options, bool default_output) {
     std::vector<Rational> ps;
     for (const std::string& value : values) ps.push_back(parse_p(value, "--p-values"));
     if (default_output) create_default_directory("out");
-    require_writable_target(options.output);
+    require_output_paths({{"--output", options.output}});
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         using I = typename std::decay_t<decltype(field)>::Interval;
         const int decimals = options.digits.empty() ? 10 : static_cast<int>(digits);
@@ -154,13 +155,12 @@ int run(const ReportOptions& options, bool default_output) {
 void add_report(CLI::App& app) {
     auto options = std::make_shared<ReportOptions>();
     CLI::App* command = app.add_subcommand("report", "Every family at the paper's sample p, and the densest");
-    command->add_option("--digits", options->digits,
-                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
+    add_digits_option(*command, options->digits, max_digits);
     command->add_option("--p-values", options->p_values, "comma-separated p values (at most " + std::to_string(max_p_values) + "; " + supported_p_text + ")")
         ->capture_default_str();
-    CLI::Option* output = command->add_option("--output", options->output,
-                                              "JSON log, written atomically (its directory must exist; the default out/ "
-                                              "is created)")
+    CLI::Option* output = add_output_option(*command, "--output", options->output,
+                                            "JSON log, written atomically (its directory must exist; the default out/ "
+                                            "is created)")
                               ->capture_default_str();
     command->add_flag("--json", options->json, "print the JSON log on stdout instead of the table");
     command->callback([options, output] { run(*options, output->count() == 0); });

@@ -20,7 +20,7 @@ struct SimulateOptions {
     PackingFiles files;
     int particles = 2;
     long steps = 20000;
-    unsigned long long seed = 1;
+    std::uint32_t seed = 1;
     std::optional<double> pressure;
     bool json = false;
 };
@@ -163,7 +163,7 @@ void add_simulate(CLI::App& app) {
     command->add_option("--p", options->p, "deformation parameter 1/2 <= p <= 10^6: a decimal or a fraction")->required();
     command->add_option("--n", options->particles, "particles per cell, 1 to " + std::to_string(max_particles) + " (default 2)");
     command->add_option("--steps", options->steps, "optimizer cycles, 1 to " + std::to_string(max_steps) + " (default 20000)");
-    command->add_option("--seed", options->seed, "random seed (default 1): the same seed gives the same run");
+    add_seed_option(*command, options->seed, "random seed (default 1): the same seed gives the same run");
     command->add_option("--init", options->init,
                         "start: lattice (the best certified lattice, 2% expanded; default), random (density 0.2), or a family "
                         "C0, C1, O0, O1, D14, S6 (2% expanded)");

@@ -2,8 +2,8 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/arith/decimal.hpp"
-#include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/crossover_certificate.hpp"
 #include "superpack/problems/crossover/crossover_json.hpp"
 
@@ -49,7 +49,7 @@ void print_table(const SphereSlopes<I>& slopes, int digits) {
 
 int run(const SlopesOptions& options) {
     if (!options.certificate.empty()) {
-        require_writable_target(options.certificate);
+        require_output_paths({{"--certificate", options.certificate}});
         require_rounding_self_test();
     }
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
@@ -75,11 +75,10 @@ void add_slopes(CLI::App& app) {
     auto options = std::make_shared<SlopesOptions>();
     CLI::App* command =
         app.add_subcommand("slopes", "One-sided slopes a_minus, a_plus of the maximal density at p = 1 vs the paper");
-    command->add_option("--digits", options->digits,
-                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default binary64");
+    add_digits_option(*command, options->digits, max_digits);
     command->add_flag("--json", options->json, "print one JSON document on stdout");
-    command->add_option("--certificate", options->certificate,
-                        "write a certificate of the slopes (replay it with `superpack verify FILE`); nothing when undecided");
+    add_output_option(*command, "--certificate", options->certificate,
+                      "write a certificate of the slopes (replay it with `superpack verify FILE`); nothing when undecided");
     command->callback([options] { run(*options); });
 }
 

@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "common.hpp"
+#include "output_paths.hpp"
 #include "superpack/arith/decimal.hpp"
-#include "superpack/cert/atomic_file.hpp"
 #include "superpack/cert/superdisk_certificate.hpp"
 #include "superpack/problems/star/star_disk.hpp"
 #include "superpack/problems/superdisk/superdisk.hpp"
@@ -196,7 +196,7 @@ int run(const SuperdiskCliOptions& options) {
     if (!options.certificate.empty() && p <= Rational(1, 2))
         throw Failure(exit_usage, "superdisk: no certificate for p <= 1/2 (p = 1/2 tiles; below, check-lattice --p P --basis "
                                   "\"u1,u2,0; w1,w2,0; 0,0,2\" --certificate FILE proves the plane lattice, NOTES.md 13.8)");
-    if (!options.certificate.empty()) require_writable_target(options.certificate);
+    require_output_paths({{"--certificate", options.certificate}});
     require_rounding_self_test();
     return with_field(options.digits, max_digits, [&](const auto& field, long digits) {
         const auto report = decided(within_contract([&] { return analyse_superdisk(p, field); }), field, digits, max_digits);
@@ -245,15 +245,14 @@ void add_superdisk(CLI::App& app) {
         "superdisk", "Superdisk: the Lambda0/Lambda1 lattices and the certified optimal packing density (p >= 1/2); below 1/2 "
         "the densest lattice packing superpack certifies (no optimality claim)");
     command->add_option("--p", options->p, std::string("deformation parameter: a decimal (1.25) or a fraction (5/4); ") + supported_p_text);
-    command->add_option("--digits", options->digits,
-                        "significant digits, 1 to " + std::to_string(max_digits) + " (Arb balls); default: binary64 intervals");
+    add_digits_option(*command, options->digits, max_digits);
     command->add_option("--scan", options->scan,
                         "a:b:h: every p = a, a + h, ..., <= b (with --csv; at most " + std::to_string(max_scan_values) + " values)");
     command->add_flag("--json", options->json, "print one JSON document on stdout");
     command->add_flag("--csv", options->csv, "with --scan: one CSV row per p on stdout");
-    command->add_option("--certificate", options->certificate,
-                        "with --p > 1/2: write a certificate of the optimum (replay it with `superpack verify FILE`); "
-                        "nothing is written when undecided");
+    add_output_option(*command, "--certificate", options->certificate,
+                      "with --p > 1/2: write a certificate of the optimum (replay it with `superpack verify FILE`); "
+                      "nothing is written when undecided");
     command->callback([options] { run(*options); });
 }
 

@@ -16,9 +16,10 @@ struct FileError : std::runtime_error {
 };
 
 // Throws FileError unless `path` can be a result file: its directory exists (missing
-// directories are never created here), and the name is new or a regular file (lstat: a
-// symbolic link, device, FIFO, socket or directory at the name is refused). Commands call it
-// before a long computation so that a bad path fails at once.
+// directories are never created here), the name is new or a regular file (lstat: a symbolic
+// link, device, FIFO, socket or directory at the name is refused), and a temporary file can be
+// created beside it (it is removed at once). Commands call it before a long computation so that
+// a bad path fails at once.
 void require_writable_target(const std::string& path);
 
 // The temporaries are named "<name>.superpack-partial-<pid>-XXXXXX". A writer killed before

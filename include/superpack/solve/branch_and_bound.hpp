@@ -178,7 +178,8 @@ class Open {
             stack_.pop_back();
             return entry;
         }
-        Entry<Box> entry = heap_.top();
+        // Moved, not copied: a copy may allocate, and a worker takes it outside its try.
+        Entry<Box> entry = std::move(const_cast<Entry<Box>&>(heap_.top()));
         heap_.pop();
         return entry;
     }
@@ -250,13 +251,16 @@ class Search {
         begin_ = std::chrono::steady_clock::now();
         std::thread monitor;
         if (options_.progress) monitor = std::thread([&] { report_progress(); });
-        if (options_.threads <= 1) {
+        if (options_.threads <= 1)
             work();
-        } else {
-            std::vector<std::thread> threads;
-            for (int t = 0; t < options_.threads; ++t) threads.emplace_back([&] { work(); });
-            for (std::thread& thread : threads) thread.join();
+        else
+            run_workers();
+        {
+            // No worker may have started (run_workers failed at once) to say so.
+            const std::lock_guard<std::mutex> lock(mutex_);
+            finished_ = true;
         }
+        wake_.notify_all();
         if (monitor.joinable()) monitor.join();
         if (error_) std::rethrow_exception(error_);
         result.counts = std::move(counts_);  // (a copy-assignment here trips g++ 12's -Wnonnull)
@@ -268,6 +272,20 @@ class Search {
     }
 
   private:
+    // The worker threads, joined. A thread that cannot start (out of memory or of threads) fails
+    // the run like an error of a box, and those started finish: a joinable std::thread destroyed
+    // would abort the process.
+    void run_workers() {
+        std::vector<std::thread> threads;
+        try {
+            for (int t = 0; t < options_.threads; ++t) threads.emplace_back([&] { work(); });
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            abandon(std::current_exception());
+        }
+        for (std::thread& thread : threads) thread.join();
+    }
+
     Entry<Box> start_entry(const Box& box, std::size_t index) {
         Entry<Box> entry{box, options_.record_trees ? tree_place(index) : std::string(), 0};
         entry.priority = priority(entry.box);
@@ -310,8 +328,8 @@ class Search {
                 continue;
             }
             lock.lock();
-            if (options_.record_trees) records_.emplace_back(taken.place, std::move(letters));
             try {
+                if (options_.record_trees) records_.emplace_back(taken.place, std::move(letters));
                 settle(taken, *examined, children);
             } catch (...) {
                 fail(std::current_exception());
@@ -377,21 +395,35 @@ class Search {
     // Under the lock: the run ends, and the first error is rethrown by run() once every thread
     // is done.
     void fail(std::exception_ptr error) {
+        --active_;
+        abandon(error);
+    }
+
+    // Under the lock: the run stops with `error` (the first one is kept), by a thread that holds
+    // no box.
+    void abandon(std::exception_ptr error) {
         if (!error_) error_ = error;
         stopped_ = true;
         open_.clear();
-        --active_;
         wake_.notify_all();
     }
 
+    // An exception may not leave a thread (std::terminate): a report that fails (out of memory)
+    // fails the run.
     void report_progress() {
         std::unique_lock<std::mutex> lock(mutex_);
         while (!wake_.wait_for(lock, options_.progress_interval, [&] { return finished_; })) {
-            const BranchProgress progress{processed_, static_cast<long>(open_.size()), counts_,
-                                          std::chrono::duration<double>(std::chrono::steady_clock::now() - begin_).count()};
-            lock.unlock();
-            options_.progress(progress);
-            lock.lock();
+            try {
+                const BranchProgress progress{processed_, static_cast<long>(open_.size()), counts_,
+                                              std::chrono::duration<double>(std::chrono::steady_clock::now() - begin_).count()};
+                lock.unlock();
+                options_.progress(progress);
+                lock.lock();
+            } catch (...) {
+                if (!lock.owns_lock()) lock.lock();
+                abandon(std::current_exception());
+                return;
+            }
         }
     }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "critical_box.hpp"
+#include "superpack/arith/decimal.hpp"
 #include "superpack/geometry/superball.hpp"
 #include "superpack/problems/best/best.hpp"
 #include "superpack/solve/branch_and_bound.hpp"
@@ -172,6 +173,12 @@ CriticalResult<DInterval> critical_setup(const CriticalReference<DInterval>& ref
             if (certainly_less(region_det, threshold)) threshold = region_det;
         }
     }
+    // The bound V(K) / T is a density only while T >= V(K), which the checker requires: a gap
+    // above 1 - phi of the best lattice can give no valid proof, so it is refused before any box.
+    if (certainly_less(threshold, lower_point(result.volume)))
+        throw InputError("critical: --gap " + rational_text(options.gap) + " is too large at p = " + rational_text(options.p) +
+                         ": T = (1 - gap) |det| falls below V(K), and V(K) / T would exceed 1; the gap must be at most 1 - phi "
+                         "of the best lattice, " + to_decimal(field.integer(1) - reference.phi, 4).lo + " here");
     result.threshold = threshold;
     result.upper_phi = upper_point(result.volume / threshold);
     result.relative_gap = upper_point(result.upper_phi / lower_point(reference.phi) - field.integer(1));

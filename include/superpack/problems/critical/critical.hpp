@@ -161,7 +161,8 @@ CriticalResult<DInterval> critical_bound(const CriticalReference<DInterval>& ref
 
 // What a run fixes before its first box: V(K), the closing regions and their images, T, the
 // upper bound and the gap (no boxes, undecided). Deterministic in p and the gap, so --merge
-// recomputes it and requires each shard's T to be the same.
+// recomputes it and requires each shard's T to be the same. A gap that puts T below V(K) (above
+// 1 - phi of the reference) is an InputError.
 CriticalResult<DInterval> critical_setup(const CriticalReference<DInterval>& reference, const CriticalOptions& options);
 
 // One shard's result as `critical --merge` reads it back (its T already matched the setup's).
