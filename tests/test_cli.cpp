@@ -197,6 +197,15 @@ TEST_CASE("critical --around R --certificate FILE: the boxes around C1's images,
     check_error("verify --threads 65 " + file, 2, "--threads: 1 to 64");
     check_error("critical --cover " + file, 2, "--certificate FILE is required");
     check_error("critical --cover " + file + " --certificate /tmp/elsewhere/cover.json", 2, "not in the directory");
+    // Every part is there, a regular file and no link, before the first is read: a missing one
+    // after a file that is no certificate is the one named.
+    std::ofstream(scratch.path + "/text.json") << "not JSON";
+    check_error("critical --cover " + scratch.path + "/text.json " + scratch.path + "/missing.json --certificate " +
+                    scratch.path + "/cover.json",
+                2, "cannot open '" + scratch.path + "/missing.json'");
+    std::filesystem::create_symlink(file, scratch.path + "/link.json");
+    check_error("critical --cover " + scratch.path + "/link.json --certificate " + scratch.path + "/cover.json", 2,
+                "is a symbolic link");
     // D14 at p = 3/5 has seven contact pairs: no closing region in the six-pair chart (after the
     // progress line of best).
     const Run seven = run("critical --p 0.6 --around 1e-5");
