@@ -136,6 +136,20 @@ TEST_CASE("critical-lattice-cover: each flaw rejected at the file that has it") 
     SECTION("a missing file") {
         check_rejected(cover_of({"missing.json"}), scratch, "proof.files[0]", "cannot read");
     }
+    SECTION("a missing file after an invalid one: found before any replay, which would stop at the first") {
+        Document tampered = part;
+        tampered["claim"]["text"] = "every lattice packing is dense";
+        scratch.write("tampered.json", tampered);
+        check_rejected(cover_of({"tampered.json", "missing.json"}), scratch, "proof.files[1]", "missing.json: no such file");
+    }
+    SECTION("a part that is a symbolic link, even to a valid part in the same directory") {
+        std::filesystem::create_symlink("part.json", scratch.path + "/link.json");
+        check_rejected(cover_of({"link.json"}), scratch, "proof.files[0]", "link.json: a symbolic link");
+    }
+    SECTION("a part that is a directory") {
+        std::filesystem::create_directory(scratch.path + "/directory.json");
+        check_rejected(cover_of({"directory.json"}), scratch, "proof.files[0]", "not a regular file");
+    }
     SECTION("a name outside the cover's directory") {
         check_rejected(cover_of({"../part.json"}), scratch, "proof.files[0]", "no '/'", Verdict::malformed);
     }

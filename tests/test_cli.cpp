@@ -105,6 +105,9 @@ TEST_CASE("critical with a budget too small: the whole answer printed, status un
     CHECK(table.status == 4);
     CHECK(table.out.find("shard 1/2") != std::string::npos);
     CHECK(table.out.find("(not proved)") != std::string::npos);
+    // A shard bounds the lattice packings of its own start boxes only.
+    CHECK(table.out.find("for the lattice packings in this shard's start boxes only") != std::string::npos);
+    CHECK(table.out.find("for every lattice packing in this shard's start boxes (not proved)") != std::string::npos);
 }
 
 TEST_CASE("critical --merge: sums shards i/n, and refuses a shard missing, repeated, of another T or not a shard") {
@@ -164,6 +167,15 @@ TEST_CASE("critical --around R --certificate FILE: the boxes around C1's images,
     CHECK(document["status"] == "proved");
     CHECK(document["start_boxes"] == 4);
     CHECK_FALSE(document.contains("shard"));
+    // T and V(K) / T hold on these boxes only: their names say so, and no field claims them for
+    // every lattice packing.
+    CHECK(document.contains("threshold_around_images"));
+    CHECK(document["upper_around_images"].contains("phi"));
+    CHECK_FALSE(document.contains("threshold"));
+    CHECK_FALSE(document.contains("upper"));
+    const Run table = run("critical --p 2 --around 1e-5");
+    CHECK(table.out.find("for the lattice packings in the boxes around the images only\n") != std::string::npos);
+    CHECK(table.out.find("for every lattice packing in the boxes around the images\n") != std::string::npos);
     const Run verified = run("verify " + file);
     INFO(verified.out << verified.err);
     CHECK(verified.status == 0);
@@ -176,6 +188,7 @@ TEST_CASE("critical --around R --certificate FILE: the boxes around C1's images,
     // A shard document whose box count is not its shard's.
     auto edited = nlohmann::json::parse(std::ifstream(scratch.path + "/around.json"));
     edited["shard"] = {{"index", 0}, {"count", 1}, {"top_level_boxes", 168}, {"split", 0}};
+    edited["threshold"] = edited["threshold_around_images"];  // a merge reads a shard's T by this name
     std::ofstream(scratch.path + "/forged.json") << edited.dump();
     check_error("critical --merge " + scratch.path + "/forged.json", 2, "has 4 start boxes, not 168");
     // --cover joins shards' certificates only: the file written above holds 4 start boxes of
@@ -184,6 +197,15 @@ TEST_CASE("critical --around R --certificate FILE: the boxes around C1's images,
     check_error("verify --threads 65 " + file, 2, "--threads: 1 to 64");
     check_error("critical --cover " + file, 2, "--certificate FILE is required");
     check_error("critical --cover " + file + " --certificate /tmp/cover.json", 2, "not in the directory");
+    // Every part is there, a regular file and no link, before the first is read: a missing one
+    // after a file that is no certificate is the one named.
+    std::ofstream(scratch.path + "/text.json") << "not JSON";
+    check_error("critical --cover " + scratch.path + "/text.json " + scratch.path + "/missing.json --certificate " +
+                    scratch.path + "/cover.json",
+                2, "cannot open '" + scratch.path + "/missing.json'");
+    std::filesystem::create_symlink(file, scratch.path + "/link.json");
+    check_error("critical --cover " + scratch.path + "/link.json --certificate " + scratch.path + "/cover.json", 2,
+                "is a symbolic link");
     // D14 at p = 3/5 has seven contact pairs: no closing region in the six-pair chart (after the
     // progress line of best).
     const Run seven = run("critical --p 0.6 --around 1e-5");

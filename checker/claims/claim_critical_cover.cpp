@@ -16,6 +16,7 @@
 // proof {kind, files}.
 #include <algorithm>
 #include <atomic>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -134,6 +135,22 @@ std::vector<std::string> read_file_names(Context& context, const Json& proof) {
     return names;
 }
 
+// Every named file is in the directory and a regular file before the first replay, so that a
+// missing part is found at once, not after the others' replays (minutes). symlink_status: a
+// symbolic link is refused, never followed.
+void require_part_files(Context& context, const std::string& directory, const std::vector<std::string>& names) {
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        std::error_code error;
+        const std::filesystem::file_status status = std::filesystem::symlink_status(directory + "/" + names[k], error);
+        const std::string problem = status.type() == std::filesystem::file_type::not_found ? "no such file"
+                                    : error                                             ? error.message()
+                                    : std::filesystem::is_symlink(status)               ? "a symbolic link, which is not followed"
+                                    : !std::filesystem::is_regular_file(status)         ? "not a regular file"
+                                                                                        : "";
+        context.require(problem.empty(), "proof.files[" + std::to_string(k) + "]", "cannot read " + names[k] + ": " + problem);
+    }
+}
+
 // A part (proof.files[k], path `at`) must have been replayed, be a valid critical-lattice
 // certificate, and be at the cover's p, gap and T; its replay's steps count as the cover's.
 void require_part_fits(Context& context, const Part& part, const std::string& at, const std::string& name,
@@ -230,6 +247,7 @@ std::string check_critical_cover(const Json& claim, Context& context) {
     if (directory.empty())
         context.malformed("proof.files", "a cover names files in its directory: verify it as a file (superpack verify FILE)");
 
+    require_part_files(context, directory, names);
     // 1-3. Every part replayed and compared; each of its start boxes placed on its path of halvings
     // from a box of the split domain.
     const std::vector<Part> parts = replay_parts(directory, names, std::max(1, context.settings().threads));

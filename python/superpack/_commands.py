@@ -73,10 +73,13 @@ class Verification(Record):
     _summary = ("verdict", "claim_kind", "claim")
 
 
-def _run(arguments, progress, result_type):
+def _run(arguments, progress, result_type, positionals=()):
+    """Runs the command; `positionals` follow "--", so that a value such as '--help' is never
+    read as an option."""
     if progress is not None and not callable(progress):
         raise InputError("progress: expected a callable taking one line (str), or None")
-    code, out, message = _superpack.run(arguments + ["--json"], progress)
+    words = arguments + ["--json"] + (["--", *positionals] if positionals else [])
+    code, out, message = _superpack.run(words, progress)
     result = result_type(json.loads(out)) if out.strip() else None
     if code == 0 and result is not None:
         return result
@@ -85,10 +88,28 @@ def _run(arguments, progress, result_type):
     raise BY_EXIT_CODE.get(code, InternalError)(message, result)
 
 
+def _word(name, text):
+    """`text` as one word of a command line: a NUL would end it early (argv is C strings), and
+    the commands read UTF-8 only."""
+    if "\0" in text:
+        raise InputError(f"{name}: contains a NUL character, which would cut the value short")
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError as error:
+        raise InputError(f"{name}: not valid Unicode ({text[error.start]!r} at {error.start} is a lone surrogate)") from None
+    return text
+
+
+def _keyword(flag):
+    """The keyword argument of a command's option: --max-boxes is max_boxes."""
+    return flag.lstrip("-").replace("-", "_")
+
+
 def _option(arguments, flag, value, convert):
-    """Appends `flag value` unless value is None (the command's default)."""
+    """Appends `flag=value` unless value is None (the command's default): one word, so that a
+    value starting with '-' is read as the value, never as an option."""
     if value is not None:
-        arguments += [flag, convert(value)]
+        arguments.append(f"{flag}={_word(_keyword(flag), convert(value))}")
 
 
 def _flag(arguments, flag, value):
@@ -118,7 +139,7 @@ def _path(name):
     def convert(value):
         if not isinstance(value, (str, os.PathLike)):
             raise InputError(f"{name}: expected a path (str or os.PathLike), got {type(value).__name__}")
-        return os.fspath(value)
+        return os.fsdecode(value)
     return convert
 
 
@@ -131,7 +152,11 @@ def _joined(name, separator, convert):
             parts = list(value)
         except TypeError:
             raise InputError(f"{name}: expected a str or a sequence, got {type(value).__name__}") from None
-        return separator.join(convert(part) for part in parts)
+        texts = [convert(part) for part in parts]
+        for text in texts:
+            if separator in text:
+                raise InputError(f"{name}: {text[:40]!r} holds the separator {separator!r}; give one value per element")
+        return separator.join(texts)
     return join
 
 
@@ -140,13 +165,20 @@ _basis = _joined("basis", ";", _joined("basis row", ",", _number("basis entry"))
 
 
 def _files(arguments, flag, paths):
-    """--merge and --cover take several files after one flag."""
+    """--merge and --cover take several files: a word --merge=FILE each, which the command
+    gathers (a name such as '-x.json' is a file then, not an option)."""
     if paths is None:
         return
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]
-    arguments.append(flag)
-    arguments += [_path(flag)(path) for path in paths]
+    try:
+        paths = list(paths)
+    except TypeError:
+        raise InputError(f"{_keyword(flag)}: expected a path or a sequence of paths, got {type(paths).__name__}") from None
+    if not paths:
+        raise InputError(f"{_keyword(flag)}: expected at least one file")
+    for path in paths:
+        _option(arguments, flag, path, _path(_keyword(flag)))
 
 
 def _with_p(arguments, p, family=None):
@@ -189,10 +221,10 @@ def audit(family=None, p_range=None, *, second_root=False, pieces=None, depth=No
 
 def crossover(kind, *, digits=None, certificate=None, progress=None):
     """A crossover of two families' densities (superpack crossover --help lists the kinds)."""
-    arguments = ["crossover", _text("kind")(kind)]
+    arguments = ["crossover"]
     _option(arguments, "--digits", digits, _whole("digits"))
     _option(arguments, "--certificate", certificate, _path("certificate"))
-    return _run(arguments, progress, Crossover)
+    return _run(arguments, progress, Crossover, [_word("kind", _text("kind")(kind))])
 
 
 def slopes(*, digits=None, certificate=None, progress=None):
@@ -292,9 +324,9 @@ def verify(path, *, threads=None):
     """The certificate replayed by the independent checker, superpack-verify, in its own process
     (it shares no code with the rest). Raises InvalidCertificate when it rejects the file."""
     checker = os.path.join(os.path.dirname(__file__), "superpack-verify")
-    arguments = [checker, "--json"]
-    _option(arguments, "--threads", threads, _whole("threads"))
-    arguments += ["--", _path("path")(path)]
+    # superpack-verify reads `--threads N` as two words.
+    arguments = [checker, "--json"] + ([] if threads is None else ["--threads", whole_number(threads, "threads")])
+    arguments += ["--", _word("path", _path("path")(path))]
     finished = subprocess.run(arguments, capture_output=True, text=True, check=False)
     result = Verification(json.loads(finished.stdout)) if finished.stdout.strip() else None
     if finished.returncode == 0 and result is not None:

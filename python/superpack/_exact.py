@@ -19,12 +19,10 @@ def exact_text(value, name):
     if isinstance(value, str):
         return value
     if isinstance(value, int):
-        return str(value)
+        return integer_text(value, name)
     if isinstance(value, fractions.Fraction):
-        # Far beyond what a command takes (100 characters), and beyond what str() of an int writes.
-        if max(abs(value.numerator), value.denominator).bit_length() > 10000:
-            raise InputError(f"{name}: a number of more than 10000 bits")
-        return str(value.numerator) if value.denominator == 1 else f"{value.numerator}/{value.denominator}"
+        numerator = integer_text(value.numerator, name)
+        return numerator if value.denominator == 1 else f"{numerator}/{integer_text(value.denominator, name)}"
     if isinstance(value, decimal.Decimal):
         if not value.is_finite():
             raise InputError(f"{name}: {value} is not a finite number")
@@ -46,11 +44,19 @@ def exact_value(value, name):
     return fractions.Fraction(exact_text(value, name))
 
 
+def integer_text(value, name):
+    """The decimal text of an int. Far beyond what a command takes (100 characters), and beyond
+    what str() writes (ValueError above 4300 digits), a number is refused by its size."""
+    if value.bit_length() > 10000:
+        raise InputError(f"{name}: a number of more than 10000 bits")
+    return str(value)
+
+
 def whole_number(value, name):
     """An int option (digits, seed, counts) as its text; a bool or float is refused."""
     if isinstance(value, bool) or not isinstance(value, int):
         raise InputError(f"{name}: expected an int, got {type(value).__name__}")
-    return str(value)
+    return integer_text(value, name)
 
 
 _RATIONAL = re.compile(r"^(-?\d+)/(\d+)$")

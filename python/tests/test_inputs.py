@@ -52,6 +52,22 @@ def test_the_same_p_in_every_exact_type_gives_the_same_enclosure():
     (lambda: superpack.audit("C0", p_range=("0.5", "2")), "range"),
     (lambda: superpack.density("C0", "2", progress="yes"), "progress"),
     (lambda: superpack.verify("/nonexistent/certificate.json"), "unreadable"),
+    # Values that look like options are values: a positional after "--", an option's as --flag=value.
+    (lambda: superpack.crossover("--help"), "got '--help'"),
+    (lambda: superpack.density("--help", "2"), "unknown family '--help'"),
+    (lambda: superpack.critical(merge=["--json"]), "cannot open '--json'"),
+    (lambda: superpack.critical(merge=[]), "merge: expected at least one file"),
+    # A NUL would cut the value short (argv holds C strings).
+    (lambda: superpack.density("C0", "2\x003"), "p: contains a NUL"),
+    (lambda: superpack.density("C0\x00x", "2"), "family: contains a NUL"),
+    (lambda: superpack.density("C0", "2", certificate="out.json\x00x"), "certificate: contains a NUL"),
+    (lambda: superpack.crossover("cubic\x00x"), "kind: contains a NUL"),
+    (lambda: superpack.verify("proof.json\x00x"), "path: contains a NUL"),
+    (lambda: superpack.density("C0", 10**5000), "more than 10000 bits"),
+    (lambda: superpack.density("C0", "2", digits=10**5000), "more than 10000 bits"),
+    (lambda: superpack.density("C0", "\udcff"), "lone surrogate"),
+    (lambda: superpack.report(p_values=["2,3"]), "separator ','"),
+    (lambda: superpack.check_lattice("2", basis=[["2;0", 0, 0], [0, 2, 0], [0, 0, 2]]), "separator ';'"),
 ])
 def test_bad_input_is_an_input_error_naming_it(call, message):
     with pytest.raises(superpack.InputError, match=message) as raised:

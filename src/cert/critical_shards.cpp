@@ -13,15 +13,29 @@ namespace superpack {
 
 namespace {
 
+const char* const not_regular = "is not a regular file";
+
+// Throws InputError (`who` starts the message) unless `path` names a regular file. lstat: a
+// symbolic link is refused, never followed, as the writes of atomic_file refuse one.
+void require_regular_file(const std::string& path, const std::string& who) {
+    struct stat status {};
+    if (lstat(path.c_str(), &status) != 0) throw InputError(who + ": cannot open '" + path + "': " + std::strerror(errno));
+    if (S_ISLNK(status.st_mode))
+        throw InputError(who + ": '" + path + "' is a symbolic link (superpack reads and writes regular files only; name the "
+                         "file itself)");
+    if (!S_ISREG(status.st_mode)) throw InputError(who + ": '" + path + "' " + not_regular);
+}
+
 // The file's text: a regular file (no symlink followed, no device or FIFO read) of at most
 // `limit` bytes; `who` starts the error message.
 std::string read_regular_file(const std::string& path, long limit, const std::string& who) {
+    require_regular_file(path, who);
+    // O_NOFOLLOW and fstat again: the name may have been replaced since.
     const int descriptor = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
     if (descriptor < 0) throw InputError(who + ": cannot open '" + path + "': " + std::strerror(errno));
     const std::unique_ptr<int, void (*)(int*)> closer(new int(descriptor), [](int* d) { close(*d); delete d; });
     struct stat status {};
-    if (fstat(descriptor, &status) != 0 || !S_ISREG(status.st_mode))
-        throw InputError(who + ": '" + path + "' is not a regular file");
+    if (fstat(descriptor, &status) != 0 || !S_ISREG(status.st_mode)) throw InputError(who + ": '" + path + "' " + not_regular);
     if (status.st_size > limit) throw InputError(who + ": '" + path + "' has more than " + std::to_string(limit) + " bytes");
     std::string text(static_cast<std::size_t>(status.st_size), '\0');
     std::size_t done = 0;
@@ -81,6 +95,8 @@ ShardDocument read_shard_document(const std::string& path) {
 CoverParts read_cover_parts(const std::vector<std::string>& paths, const std::string& cover, int split) {
     const std::string who = "critical --cover";
     const std::filesystem::path directory = std::filesystem::weakly_canonical(std::filesystem::absolute(cover).parent_path());
+    // Every part is there before the first is parsed (each up to 256 MiB): a missing one fails at once.
+    for (const std::string& path : paths) require_regular_file(path, who);
     CoverParts parts;
     long start_boxes = 0;
     for (const std::string& path : paths) {

@@ -59,7 +59,9 @@ Json box_json(const ChartBox<DInterval>& box) {
             {"depth", box.depth}};
 }
 
-Json result_json(const CriticalResult<DInterval>& result) {
+// `bound_suffix` follows the names of the two fields that state the bound: "" on the whole
+// domain, and on given boxes (--around) what they are, since the bound holds on them only.
+Json result_json(const CriticalResult<DInterval>& result, const std::string& bound_suffix) {
     Json counts = Json::object();
     for (int r = 0; r < box_reasons; ++r) counts[box_reason_name(static_cast<BoxReason>(r))] = result.counts[r];
     Json regions = Json::array();
@@ -81,9 +83,9 @@ Json result_json(const CriticalResult<DInterval>& result) {
     return {{"status", result.status == Outcome::proved ? "proved" : "undecided"},
             {"message", result.message},
             {"lower", {{"lattice", result.reference.name}, {"phi", enclosure_json(result.reference.phi)}, {"basis", basis}}},
-            {"upper", {{"phi", enclosure_json(result.upper_phi)}}},
+            {"upper" + bound_suffix, {{"phi", enclosure_json(result.upper_phi)}}},
             {"relative_gap", enclosure_json(result.relative_gap)},
-            {"threshold", enclosure_json(result.threshold)},
+            {"threshold" + bound_suffix, enclosure_json(result.threshold)},
             {"volume", enclosure_json(result.volume)},
             {"boxes", counts},
             {"processed", result.processed},
@@ -99,12 +101,17 @@ void print_table(const CriticalResult<DInterval>& result, const CriticalOptions&
     const DecimalEnclosure upper = to_decimal(result.upper_phi, 17);
     const DecimalEnclosure gap = to_decimal(result.relative_gap, 3);
     const DecimalEnclosure threshold = to_decimal(result.threshold, 17);
+    // A part of the domain (a shard, or --around's boxes) bounds the lattice packings in it only.
+    const std::string part = options.around > 0      ? " in the boxes around the images"
+                             : result.partial_domain ? " in this shard's start boxes"
+                                                     : "";
     std::cout << "p            " << decimal_or_fraction_text(options.p) << "\n"
               << "lower        phi in [" << lower.lo << ", " << lower.hi << "]  " << result.reference.name
               << " (the densest certified lattice packing, superpack best)\n"
-              << "upper        phi <= " << upper.hi << (result.status == Outcome::proved ? "" : "  (not proved)") << "\n"
+              << "upper        phi <= " << upper.hi << (part.empty() ? "" : " for the lattice packings" + part + " only")
+              << (result.status == Outcome::proved ? "" : "  (not proved)") << "\n"
               << "gap          upper / lower - 1 <= " << gap.hi << "\n"
-              << "threshold    |det| >= " << threshold.lo << " for every lattice packing"
+              << "threshold    |det| >= " << threshold.lo << " for every lattice packing" << part
               << (result.status == Outcome::proved ? "" : " (not proved)") << "\n";
     if (options.around > 0)
         std::cout << "domain       " << result.start_boxes << " chart boxes around the best lattice's images (--around): the "
@@ -149,7 +156,7 @@ void print_result(const CriticalResult<DInterval>& result, const CriticalOptions
         else
             document["shard"] = {{"index", options.shard}, {"count", options.shards}, {"top_level_boxes", top_level_boxes},
                                  {"split", options.split}};
-        document.update(result_json(result));
+        document.update(result_json(result, options.around > 0 ? "_around_images" : ""));
         print_json(document);
     } else {
         print_table(result, options, merged);
