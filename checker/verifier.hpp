@@ -108,6 +108,13 @@ private:
     std::shared_ptr<std::unordered_set<const Json*>> read_;
 };
 
+// The one reader of a JSON integer: a value in [lo, hi], else malformed at `path` ("expected an
+// integer from lo to hi", naming `limit` when one is given). Compared as the JSON value's own type
+// (nlohmann keeps a parsed non-negative integer as unsigned 64-bit): get<long>() would wrap
+// 2^64 - 1 into -1, so a file could show one number and the checker use another.
+long read_integer(const Context& context, const Json& node, const std::string& path, long lo, long hi,
+                  const char* limit = nullptr);
+
 // Replays the claim and returns its sentence, rendered from the values it verified.
 using ClaimChecker = std::string (*)(const Json& claim, Context& context);
 struct ClaimKindRegistration {

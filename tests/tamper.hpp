@@ -2,6 +2,8 @@
 // change that moves a bound inward. Shared by the certificate tests of every claim kind.
 #pragma once
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -24,6 +26,13 @@ inline void collect_bounds(const nlohmann::json& node, const std::string& pointe
     } else if (node.is_array()) {
         for (std::size_t k = 0; k < node.size(); ++k) collect_bounds(node[k], pointer + "/" + std::to_string(k), bounds);
     }
+}
+
+// A committed certificate, proofs/<name>.json.
+inline nlohmann::json committed_proof(const std::string& name) {
+    std::ifstream file(std::filesystem::path(SUPERPACK_TEST_DATA) / ".." / ".." / "proofs" / (name + ".json"));
+    REQUIRE(file.good());
+    return nlohmann::json::parse(file);
 }
 
 // Changes the leading digit of the mantissa so that the bound moves inward (a lower end up,

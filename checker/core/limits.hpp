@@ -5,6 +5,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace superpack_checker {
 
@@ -56,6 +57,11 @@ constexpr std::size_t max_rational_characters = 10000;
 // packing of a superball with 1/2 < p < oo has at most 7 (NOTES.md 11.2.2, item 2); 13 allows the
 // cube's 13 pairs as well.
 constexpr std::size_t max_contact_pairs = 13;
+
+// An integer coefficient of a lattice vector (a contact, a witness, a shift, a candidate) or of a
+// basis change: any 64-bit value but -2^63, so that -c is defined (negating -2^63 is undefined
+// behaviour) and every coefficient read is the file's own value, never one wrapped into range.
+constexpr long max_coefficient = std::numeric_limits<long>::max();
 
 // The critical-lattice claim (claim_critical_lattice.cpp, NOTES.md 12.8). Start boxes: the whole
 // domain has 168, split 8 times (max_domain_split) 168 * 2^8, --around a few. Closing regions:

@@ -207,10 +207,8 @@ Box check_split_tree(Context& context, const Json& node, const std::string& path
     const Json& cases = context.member(node, "cases", path);
     if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
     context.require(cases.size() == 2, path + ".cases", "a split needs both of its cases");
-    const Json& dimension_json = context.member(node, "dimension", path);
-    if (!dimension_json.is_number_unsigned() || dimension_json.get<std::size_t>() >= box.size())
-        context.malformed(path + ".dimension", "not a dimension of the box");
-    const std::size_t dimension = dimension_json.get<std::size_t>();
+    const auto dimension = static_cast<std::size_t>(read_integer(context, context.member(node, "dimension", path),
+                                                                 path + ".dimension", 0, static_cast<long>(box.size()) - 1));
     const std::string left_path = path + ".cases[0]", right_path = path + ".cases[1]";
     const Box left = check_split_tree(context, cases[0], left_path, leaf, depth + 1);
     const Box right = check_split_tree(context, cases[1], right_path, leaf, depth + 1);
