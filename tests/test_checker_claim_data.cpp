@@ -46,7 +46,7 @@ TEST_CASE("an integer beyond 64 bits or -2^63 in a certificate is unreadable at 
         CHECK(malformed_at(contacts, "/claim/data/contacts", value) == "claim.data.contacts");
         CHECK(malformed_at(basis, "/proof/reduction/transform/1/0", value) == "proof.reduction.transform[1][0]");
         CHECK(malformed_at(basis, "/proof/candidates/0/coefficients/0", value) == "proof.candidates[0].coefficients[0]");
-        CHECK(malformed_at(split, "/proof/parameters/dimension", value) == "proof.parameters.dimension");
+        CHECK(malformed_at(split, "/proof/parameters/cases/0/dimension", value) == "proof.parameters.cases[0].dimension");
         CHECK(malformed_at(basis, "/digits", value) == "digits");
         CHECK(malformed_at(basis, "/bits", value) == "bits");
         CHECK(malformed_at(basis, "/format_version", value) == "format_version");
@@ -59,4 +59,32 @@ TEST_CASE("an integer beyond 64 bits or -2^63 in a certificate is unreadable at 
     const auto report = superpack_checker::verify_text(far.dump());
     CHECK(report.verdict == Verdict::invalid);
     CHECK(report.path == "claim.data.contact_vectors");
+}
+
+namespace {
+
+// The certificate with one end of an exact interval moved (its decimal rendered again): the path
+// of an invalid verdict, or what else it was.
+std::string widened_rejected_at(Document document, const std::string& pointer, const std::string& end) {
+    superpack::test::set_bound(document, pointer, end);
+    const auto report = superpack_checker::verify_text(document.dump());
+    INFO(pointer << " = " << end << ": " << to_string(report.verdict) << " at " << report.path << ": " << report.message);
+    return report.verdict == Verdict::invalid ? report.path : "(" + std::string(to_string(report.verdict)) + ")";
+}
+
+}  // namespace
+
+TEST_CASE("an enclosure whose claim is a bound must show the bound itself, not only hold the checker's value") {
+    // The witness norm [1.97, 3.95]: it holds the true norm, and the sentence printed it with "< 2".
+    CHECK(widened_rejected_at(committed_proof("lattice-O1-p0.6-overlapping"), "/claim/data/witness/norm/hi",
+                              "8888999625333387*2^-51") == "claim.data.witness.norm");
+    CHECK(widened_rejected_at(committed_proof("lattice-overlapping-p2"), "/claim/data/witness/norm/hi",
+                              "8556839292003947*2^-51") == "claim.data.witness.norm");
+    CHECK(widened_rejected_at(committed_proof("audit-O0-p0.792481-1"), "/claim/data/pieces/0/witness/norm/hi",
+                              "4503599623109453*2^-50") == "claim.data.pieces[0].witness.norm");
+    // g(x) of a star-body witness point: "both < 1".
+    CHECK(widened_rejected_at(committed_proof("star-lattice-quarter-p0.3-overlapping"), "/claim/data/witness/values/0/hi",
+                              "5143650182532717*2^-52") == "claim.data.witness.values[0]");
+    // A KKT multiplier: "all multipliers > 0".
+    CHECK(widened_rejected_at(committed_proof("best-p0.6"), "/claim/data/multipliers/0/lo", "-1") == "claim.data.multipliers[0]");
 }
