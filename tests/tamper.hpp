@@ -55,14 +55,11 @@ inline std::string tamper_inward(const std::string& text, bool lower) {
     return mantissa + rest;
 }
 
-// Moves the bound at `pointer` (".../lo" or ".../hi") inward with tamper_inward and renders the
-// decimal beside it again by the checker's rule, so that only the replay of the proof can tell
-// (the generic checks of decimals and of claim.text come after it). Returns the new bound.
-inline std::string tamper_bound(nlohmann::json& document, const std::string& pointer) {
+// Sets the bound at `pointer` (".../lo" or ".../hi") to `value` and renders the decimal beside it
+// again by the checker's rule, as a forger would, so that only the checker's own steps can tell.
+inline void set_bound(nlohmann::json& document, const std::string& pointer, const std::string& value) {
     const nlohmann::json::json_pointer at(pointer);
-    const bool lower = pointer.substr(pointer.size() - 2) == "lo";
-    const std::string after = tamper_inward(document[at].get<std::string>(), lower);
-    document[at] = after;
+    document[at] = value;
     nlohmann::json& interval = document[at.parent_pointer()];
     try {
         const nlohmann::json copy = interval;
@@ -71,6 +68,15 @@ inline std::string tamper_bound(nlohmann::json& document, const std::string& poi
     } catch (const superpack_checker::Rejection&) {
         // lo > hi now (an empty interval): the replay rejects it at the bound's step anyway.
     }
+}
+
+// Moves the bound at `pointer` (".../lo" or ".../hi") inward with tamper_inward and renders the
+// decimal beside it again by the checker's rule, so that only the replay of the proof can tell
+// (the generic checks of decimals and of claim.text come after it). Returns the new bound.
+inline std::string tamper_bound(nlohmann::json& document, const std::string& pointer) {
+    const bool lower = pointer.substr(pointer.size() - 2) == "lo";
+    const std::string after = tamper_inward(document[nlohmann::json::json_pointer(pointer)].get<std::string>(), lower);
+    set_bound(document, pointer, after);
     return after;
 }
 

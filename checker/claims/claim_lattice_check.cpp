@@ -134,10 +134,8 @@ std::string check_witness(Context& context, const Json& data, const RationalMatr
                                  "claim.data.witness.coefficients");
     context.require(t != Triple{0, 0, 0}, "claim.data.witness", "the zero vector is no witness");
     const Real norm = norm_enclosure(combination(basis, t), two_p, precision);
-    const Real stated = proved_enclosure(context, context.member(witness, "norm", "claim.data.witness"),
-                                         "claim.data.witness.norm", norm);
-    context.require(less(norm, integer(2, precision)), "claim.data.witness",
-                    "the witness norm " + text(norm) + " is not certainly < 2");
+    const Real stated =
+        proved_below(context, context.member(witness, "norm", "claim.data.witness"), "claim.data.witness.norm", norm, 2);
     return "The lattice with basis rows " + basis_words(basis) + " at p = " + exact_text(p) +
            " is not a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1: the lattice vector " + triple_text(t) +
            " has 2p-norm in " + enclosure_words(stated) + " < 2.";

@@ -61,8 +61,7 @@ FamilyVerdict check_overlap_witness(Context& context, const FamilyForms& forms, 
     context.require(t != Triple{0, 0, 0}, path, "the zero vector is no witness");
     const Real own = norm(coordinates(combination(forms, t), values, precision), p);
     result.witness = t;
-    result.witness_norm = proved_enclosure(context, context.member(witness, "norm", path), path + ".norm", own);
-    context.require(less(own, integer(2, precision)), path, "the witness norm " + text(own) + " is not certainly < 2");
+    result.witness_norm = proved_below(context, context.member(witness, "norm", path), path + ".norm", own, 2);
     return result;
 }
 
