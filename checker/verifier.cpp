@@ -203,7 +203,7 @@ VerifyReport verify_document(const Json& document, const VerifySettings& setting
         // The checker works 64 bits above the producer (at least 128), so that its own
         // enclosures are tighter than the ones it checks.
         report.precision = std::max<mpfr_prec_t>(min_precision, bits + guard_bits);
-        Context context(head, report.precision);
+        Context context(head, report.precision, bits);
         const Json& passed = context.member(self_test, "passed", "rounding_self_test");
         context.require(passed.is_boolean() && passed.get<bool>(), "rounding_self_test.passed",
                         "the producer's rounding self-test did not pass");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "checker/core/limits.hpp"
 
@@ -275,6 +276,19 @@ void check_encloses(Context& context, const Json& stated, const std::string& pat
     const Real claimed = context.interval(stated, path);
     context.require(subset(own, claimed), path,
                     "the stated enclosure " + text(claimed) + " does not contain the checker's " + text(own));
+    // Containing the checker's value is not enough: phi widened to [0.80, 1.61] still contains it,
+    // and the sentence prints what the file states. So the stated enclosure may be only a little
+    // wider than the checker's own, plus the producer's rounding (limits.hpp). Part of the same
+    // step: the count of steps is that of the containment check.
+    const Width allowed = enclosure_width_factor * width(own) +
+                          scaled(magnitude(own), enclosure_slack_bits - context.producer_precision());
+    if (!(width(claimed) <= allowed)) {
+        std::ostringstream reason;
+        reason << "wider than the checker's own enclosure " << text(own) << ": " << text(claimed) << " is " << width(claimed)
+               << " wide, more than " << enclosure_width_factor << " times the checker's width plus 2^-(bits - "
+               << enclosure_slack_bits << ") max(1, |x|), " << allowed;
+        context.reject(path, reason.str());
+    }
 }
 
 bool disjoint(const Box& a, const Box& b) {
