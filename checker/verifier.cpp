@@ -5,7 +5,6 @@
 #include <fstream>
 #include <iterator>
 #include <map>
-#include <optional>
 #include <sstream>
 
 #include "checker/core/document_check.hpp"
@@ -61,20 +60,6 @@ std::string parse_dyadic(mpfr_t result, const std::string& text) {
     return "";
 }
 
-// A whole number in [lo, hi], or nothing (JSON integers may be signed or unsigned 64-bit).
-std::optional<long> whole_number(const Json& value, long lo, long hi) {
-    if (value.is_number_unsigned()) {
-        const auto n = value.get<std::uint64_t>();
-        if (n <= static_cast<std::uint64_t>(hi) && static_cast<long>(n) >= lo) return static_cast<long>(n);
-        return std::nullopt;
-    }
-    if (value.is_number_integer()) {
-        const auto n = value.get<std::int64_t>();
-        if (lo <= n && n <= hi) return static_cast<long>(n);
-    }
-    return std::nullopt;
-}
-
 bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
 
 // The producer's precision, which sets the checker's (and so its cost): "bits" must be what
@@ -83,23 +68,21 @@ bool starts_with(const std::string& text, const std::string& prefix) { return te
 // anything is computed, so that a forged "bits" cannot make a small file run for minutes.
 long producer_bits(const Context& head, const Json& document) {
     const std::string backend = head.string_at(document, "backend", "");
-    const std::optional<long> digits = whole_number(head.member(document, "digits", ""), 1, max_digits);
-    if (!digits)
-        head.malformed("digits", "expected a whole number from 1 to " + std::to_string(max_digits) + " (max_digits)");
+    const long digits = read_integer(head, head.member(document, "digits", ""), "digits", 1, max_digits, "max_digits");
     long expected = 0;
     if (starts_with(backend, "binary64-interval")) {
-        if (*digits != binary64_digits)
+        if (digits != binary64_digits)
             head.malformed("digits", "a binary64 certificate has " + std::to_string(binary64_digits) + " digits, not " +
-                                         std::to_string(*digits));
+                                         std::to_string(digits));
         expected = binary64_bits;
     } else if (starts_with(backend, "arb-ball")) {
-        expected = arb_bits_for_digits(*digits);
+        expected = arb_bits_for_digits(digits);
     } else {
         head.malformed("backend", "unknown backend (this checker reads binary64-interval and arb-ball)");
     }
     const Json& bits = head.member(document, "bits", "");
-    if (whole_number(bits, expected, expected) != expected)
-        head.malformed("bits", "expected " + std::to_string(expected) + " bits for the backend at " + std::to_string(*digits) +
+    if (read_integer(head, bits, "bits", 1, max_bits) != expected)
+        head.malformed("bits", "expected " + std::to_string(expected) + " bits for the backend at " + std::to_string(digits) +
                                    " digits, got " + bits.dump());
     return expected;
 }
@@ -159,6 +142,21 @@ mpq_class Context::rational_at(const Json& object, const std::string& key, const
     return value;
 }
 
+long read_integer(const Context& context, const Json& node, const std::string& path, long lo, long hi, const char* limit) {
+    bool in_range = false;
+    if (node.is_number_unsigned()) {
+        const std::uint64_t value = node.get<std::uint64_t>();
+        in_range = hi >= 0 && value <= static_cast<std::uint64_t>(hi) && (lo <= 0 || value >= static_cast<std::uint64_t>(lo));
+    } else if (node.is_number_integer()) {
+        const std::int64_t value = node.get<std::int64_t>();
+        in_range = lo <= value && value <= hi;
+    }
+    if (!in_range)
+        context.malformed(path, "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                                    (limit ? std::string(" (") + limit + ")" : std::string()) + ", got " + node.dump());
+    return node.get<long>();  // in [lo, hi], so the same value in either JSON type
+}
+
 Real Context::interval(const Json& node, const std::string& path) {
     const std::string lo_text = string_at(node, "lo", path), hi_text = string_at(node, "hi", path);
     mpfr_t lo, hi;
@@ -193,8 +191,8 @@ VerifyReport verify_document(const Json& document, const VerifySettings& setting
         if (excess.found) head.malformed(excess.path, excess.message);
         if (head.string_at(document, "format", "") != "superpack-certificate")
             head.malformed("format", "not a superpack certificate");
-        const Json& version = head.member(document, "format_version", "");
-        if (!version.is_number_integer() || version.get<long>() != 2)
+        if (read_integer(head, head.member(document, "format_version", ""), "format_version", 0,
+                         std::numeric_limits<long>::max()) != 2)
             head.malformed("format_version", "unsupported format version (this checker reads 2)");
         const long bits = producer_bits(head, document);
         const Json& self_test = head.member(document, "rounding_self_test", "");
@@ -205,7 +203,7 @@ VerifyReport verify_document(const Json& document, const VerifySettings& setting
         // The checker works 64 bits above the producer (at least 128), so that its own
         // enclosures are tighter than the ones it checks.
         report.precision = std::max<mpfr_prec_t>(min_precision, bits + guard_bits);
-        Context context(head, report.precision);
+        Context context(head, report.precision, bits);
         const Json& passed = context.member(self_test, "passed", "rounding_self_test");
         context.require(passed.is_boolean() && passed.get<bool>(), "rounding_self_test.passed",
                         "the producer's rounding self-test did not pass");

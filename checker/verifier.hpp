@@ -67,17 +67,27 @@ struct Rejection {
 // step counter.
 class Context {
 public:
+    // A context outside verify_document (a test or a cover reading values) has no producer: its
+    // own precision stands in for the producer's, the strictest choice for check_encloses.
     Context(const Json& document, mpfr_prec_t precision, VerifySettings settings = {})
         : document_(document),
           precision_(precision),
+          producer_precision_(precision),
           settings_(std::move(settings)),
           read_(std::make_shared<std::unordered_set<const Json*>>()) {}
     // The same document at another precision, sharing the record of what has been read.
-    Context(const Context& other, mpfr_prec_t precision)
-        : document_(other.document_), precision_(precision), settings_(other.settings_), read_(other.read_) {}
+    Context(const Context& other, mpfr_prec_t precision, mpfr_prec_t producer_precision)
+        : document_(other.document_),
+          precision_(precision),
+          producer_precision_(producer_precision),
+          settings_(other.settings_),
+          read_(other.read_) {}
     const Json& document() const { return document_; }
     const VerifySettings& settings() const { return settings_; }
     mpfr_prec_t precision() const { return precision_; }
+    // The certificate's "bits": the precision its stated enclosures were computed at, which sets
+    // how much wider than the checker's own they may honestly be (check_encloses).
+    mpfr_prec_t producer_precision() const { return producer_precision_; }
     long steps() const { return steps_; }
     void count_step() { ++steps_; }
     void count_steps(long steps) { steps_ += steps; }
@@ -103,10 +113,18 @@ public:
 private:
     const Json& document_;
     mpfr_prec_t precision_;
+    mpfr_prec_t producer_precision_;
     VerifySettings settings_;
     long steps_ = 0;
     std::shared_ptr<std::unordered_set<const Json*>> read_;
 };
+
+// The one reader of a JSON integer: a value in [lo, hi], else malformed at `path` ("expected an
+// integer from lo to hi", naming `limit` when one is given). Compared as the JSON value's own type
+// (nlohmann keeps a parsed non-negative integer as unsigned 64-bit): get<long>() would wrap
+// 2^64 - 1 into -1, so a file could show one number and the checker use another.
+long read_integer(const Context& context, const Json& node, const std::string& path, long lo, long hi,
+                  const char* limit = nullptr);
 
 // Replays the claim and returns its sentence, rendered from the values it verified.
 using ClaimChecker = std::string (*)(const Json& claim, Context& context);

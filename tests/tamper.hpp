@@ -2,6 +2,8 @@
 // change that moves a bound inward. Shared by the certificate tests of every claim kind.
 #pragma once
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -26,6 +28,13 @@ inline void collect_bounds(const nlohmann::json& node, const std::string& pointe
     }
 }
 
+// A committed certificate, proofs/<name>.json.
+inline nlohmann::json committed_proof(const std::string& name) {
+    std::ifstream file(std::filesystem::path(SUPERPACK_TEST_DATA) / ".." / ".." / "proofs" / (name + ".json"));
+    REQUIRE(file.good());
+    return nlohmann::json::parse(file);
+}
+
 // Changes the leading digit of the mantissa so that the bound moves inward (a lower end up,
 // an upper end down): "5*2^-3" as a lower end becomes "6*2^-3", as an upper end "4*2^-3".
 inline std::string tamper_inward(const std::string& text, bool lower) {
@@ -46,14 +55,11 @@ inline std::string tamper_inward(const std::string& text, bool lower) {
     return mantissa + rest;
 }
 
-// Moves the bound at `pointer` (".../lo" or ".../hi") inward with tamper_inward and renders the
-// decimal beside it again by the checker's rule, so that only the replay of the proof can tell
-// (the generic checks of decimals and of claim.text come after it). Returns the new bound.
-inline std::string tamper_bound(nlohmann::json& document, const std::string& pointer) {
+// Sets the bound at `pointer` (".../lo" or ".../hi") to `value` and renders the decimal beside it
+// again by the checker's rule, as a forger would, so that only the checker's own steps can tell.
+inline void set_bound(nlohmann::json& document, const std::string& pointer, const std::string& value) {
     const nlohmann::json::json_pointer at(pointer);
-    const bool lower = pointer.substr(pointer.size() - 2) == "lo";
-    const std::string after = tamper_inward(document[at].get<std::string>(), lower);
-    document[at] = after;
+    document[at] = value;
     nlohmann::json& interval = document[at.parent_pointer()];
     try {
         const nlohmann::json copy = interval;
@@ -62,6 +68,15 @@ inline std::string tamper_bound(nlohmann::json& document, const std::string& poi
     } catch (const superpack_checker::Rejection&) {
         // lo > hi now (an empty interval): the replay rejects it at the bound's step anyway.
     }
+}
+
+// Moves the bound at `pointer` (".../lo" or ".../hi") inward with tamper_inward and renders the
+// decimal beside it again by the checker's rule, so that only the replay of the proof can tell
+// (the generic checks of decimals and of claim.text come after it). Returns the new bound.
+inline std::string tamper_bound(nlohmann::json& document, const std::string& pointer) {
+    const bool lower = pointer.substr(pointer.size() - 2) == "lo";
+    const std::string after = tamper_inward(document[nlohmann::json::json_pointer(pointer)].get<std::string>(), lower);
+    set_bound(document, pointer, after);
     return after;
 }
 

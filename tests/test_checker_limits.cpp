@@ -14,6 +14,7 @@
 #include "superpack/cert/crossover_certificate.hpp"
 #include "superpack/arith/exact.hpp"
 #include "support.hpp"
+#include "tamper.hpp"
 
 namespace {
 
@@ -24,12 +25,7 @@ using Document = nlohmann::json;
 namespace fs = std::filesystem;
 
 const fs::path proofs = fs::path(SUPERPACK_TEST_DATA) / ".." / ".." / "proofs";
-
-Document proof(const std::string& name) {
-    std::ifstream file(proofs / (name + ".json"));
-    REQUIRE(file.good());
-    return Document::parse(file);
-}
+const auto proof = superpack::test::committed_proof;
 
 // A file in the temporary folder, removed at the end of the test.
 struct TemporaryFile {

@@ -17,6 +17,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "checker/core/limits.hpp"
 #include "checker/core/render.hpp"
 #include "checker/formulas/equations.hpp"
 #include "checker/formulas/lattice_enumeration.hpp"
@@ -77,9 +78,9 @@ void decide_candidate(Context& context, const Json& proof, const RationalMatrix&
 // basis (the checker's contacts t in R are t U there), each +- pair once. Returns the count.
 long check_claimed_contacts(Context& context, const Json& data, const std::set<Triple>& contacts,
                             const Reduction& reduction) {
-    const Json& count = context.member(data, "contacts", "claim.data");
-    if (!count.is_number_integer()) context.malformed("claim.data.contacts", "expected an integer");
-    context.require(count.get<long>() == 2 * static_cast<long>(contacts.size()), "claim.data.contacts",
+    const long count = read_integer(context, context.member(data, "contacts", "claim.data"), "claim.data.contacts", 0,
+                                    2 * static_cast<long>(max_contact_pairs), "max_contact_pairs");
+    context.require(count == 2 * static_cast<long>(contacts.size()), "claim.data.contacts",
                     "the checker finds " + std::to_string(2 * contacts.size()) + " contacts");
     const Json& vectors = context.member(data, "contact_vectors", "claim.data");
     if (!vectors.is_array()) context.malformed("claim.data.contact_vectors", "expected an array");
@@ -98,7 +99,7 @@ long check_claimed_contacts(Context& context, const Json& data, const std::set<T
     context.require(stated == given && distinct.size() == 2 * contacts.size() && vectors.size() == distinct.size(),
                     "claim.data.contact_vectors",
                     "the stated contact vectors differ from the checker's");
-    return count.get<long>();
+    return count;
 }
 
 // The proof's list of decided contacts, each with its exact vector, must be the checker's.
@@ -133,10 +134,8 @@ std::string check_witness(Context& context, const Json& data, const RationalMatr
                                  "claim.data.witness.coefficients");
     context.require(t != Triple{0, 0, 0}, "claim.data.witness", "the zero vector is no witness");
     const Real norm = norm_enclosure(combination(basis, t), two_p, precision);
-    const Real stated = proved_enclosure(context, context.member(witness, "norm", "claim.data.witness"),
-                                         "claim.data.witness.norm", norm);
-    context.require(less(norm, integer(2, precision)), "claim.data.witness",
-                    "the witness norm " + text(norm) + " is not certainly < 2");
+    const Real stated =
+        proved_below(context, context.member(witness, "norm", "claim.data.witness"), "claim.data.witness.norm", norm, 2);
     return "The lattice with basis rows " + basis_words(basis) + " at p = " + exact_text(p) +
            " is not a packing of the superball |x|^(2p) + |y|^(2p) + |z|^(2p) <= 1: the lattice vector " + triple_text(t) +
            " has 2p-norm in " + enclosure_words(stated) + " < 2.";

@@ -86,10 +86,11 @@ void check_multipliers(Context& context, const Json& data, const KktPoint& point
         context.malformed("claim.data.multipliers", "expected one interval per contact pair");
     for (std::size_t i = 0; i < m; ++i) {
         const std::string path = "claim.data.multipliers[" + std::to_string(i) + "]";
-        check_encloses(context, multipliers[i], path, point.multipliers[i]);
-        context.require(positive(point.multipliers[i]), path,
+        // The sentence says every multiplier is > 0: so must the stated enclosure (it holds the checker's).
+        const Real stated = proved_enclosure(context, multipliers[i], path, point.multipliers[i]);
+        context.require(positive(stated), path,
                         "the multiplier of the contact pair " + triple_text(contacts[i]) + " is not certainly positive: " +
-                            text(point.multipliers[i]));
+                            text(stated));
     }
 }
 

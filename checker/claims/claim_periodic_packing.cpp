@@ -31,7 +31,6 @@
 // p_decimal, particles}; proof {kind "separating-planes", radius, pairs [{first, second, shift,
 // normal}]}. NOTES.md 14.
 #include <algorithm>
-#include <cstdint>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -358,12 +357,10 @@ void check_packing_and_count(Context& context, const Json& data, const Json& inp
     const Json& packing = context.member(data, "packing", "claim.data");
     if (!packing.is_boolean()) context.malformed("claim.data.packing", "expected true or false");
     context.require(packing.get<bool>(), "claim.data.packing", "this kind certifies packings only");
-    const Json& count = context.member(inputs, "particles", "inputs");
-    if (!count.is_number_integer()) context.malformed("inputs.particles", "expected an integer");
-    const bool same_count = count.is_number_unsigned() ? count.get<std::uint64_t>() == n
-                                                       : count.get<std::int64_t>() == static_cast<std::int64_t>(n);
-    context.require(same_count, "inputs.particles", "the input count " + count.dump() + " differs from the claim's " +
-                                                        std::to_string(n) + " particles");
+    const long count = read_integer(context, context.member(inputs, "particles", "inputs"), "inputs.particles", 1,
+                                    static_cast<long>(max_periodic_particles), "max_periodic_particles");
+    context.require(count == static_cast<long>(n), "inputs.particles", "the input count " + std::to_string(count) +
+                                                                           " differs from the claim's " + std::to_string(n) + " particles");
 }
 
 // The radius r of proof.radius: at least the circumradius of K (1 for p <= 1, 3^((1 - 1/p)/2)

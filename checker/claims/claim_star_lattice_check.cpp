@@ -76,13 +76,10 @@ std::string check_overlap(Context& context, const LatticeClaim& read, const Json
     const Json& values = context.member(witness, "values", path);
     if (!values.is_array() || values.size() != 2) context.malformed(path + ".values", "expected g(x) and g(x - v)");
     const mpfr_prec_t precision = context.precision();
-    const Real q = rational(2 * read.p, precision), one = integer(1, precision);
-    const Real inside = gauge_power(x, q, precision), translate = gauge_power(shifted, q, precision);
-    const Real stated_inside = proved_enclosure(context, values[0], path + ".values[0]", inside);
-    const Real stated_translate = proved_enclosure(context, values[1], path + ".values[1]", translate);
-    context.require(less(inside, one), path + ".point", "g(x) = " + text(inside) + " is not certainly < 1: x is not inside K");
-    context.require(less(translate, one), path + ".point",
-                    "g(x - v) = " + text(translate) + " is not certainly < 1: x is not inside K + v");
+    const Real q = rational(2 * read.p, precision);
+    // g(x) < 1: x inside K; g(x - v) < 1: x inside K + v.
+    const Real stated_inside = proved_below(context, values[0], path + ".values[0]", gauge_power(x, q, precision), 1);
+    const Real stated_translate = proved_below(context, values[1], path + ".values[1]", gauge_power(shifted, q, precision), 1);
     return "The lattice with basis rows " + basis_words(read.basis) + " is not a packing of " + body_words(read.p) +
            ": the point x = (" + exact_text(x[0]) + ", " + exact_text(x[1]) + ", " + exact_text(x[2]) +
            ") lies inside K and K + v for the lattice vector v = " + triple_text(t) + ", with g(x) in " +

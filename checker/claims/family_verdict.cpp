@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "checker/core/limits.hpp"
 #include "checker/core/render.hpp"
 
 namespace superpack_checker {
@@ -60,8 +61,7 @@ FamilyVerdict check_overlap_witness(Context& context, const FamilyForms& forms, 
     context.require(t != Triple{0, 0, 0}, path, "the zero vector is no witness");
     const Real own = norm(coordinates(combination(forms, t), values, precision), p);
     result.witness = t;
-    result.witness_norm = proved_enclosure(context, context.member(witness, "norm", path), path + ".norm", own);
-    context.require(less(own, integer(2, precision)), path, "the witness norm " + text(own) + " is not certainly < 2");
+    result.witness_norm = proved_below(context, context.member(witness, "norm", path), path + ".norm", own, 2);
     return result;
 }
 
@@ -126,9 +126,9 @@ std::set<Triple> enumerate_contacts(Context& context, const FamilyForms& forms, 
 // checker's contacts. Returns the count.
 long check_stated_contacts(Context& context, const std::set<Triple>& contacts, const Json& stated,
                            const std::string& stated_path, const Json& enumeration, const std::string& enumeration_path) {
-    const Json& count = context.member(stated, "contacts", stated_path);
-    if (!count.is_number_integer()) context.malformed(stated_path + ".contacts", "expected an integer");
-    context.require(count.get<long>() == 2 * static_cast<long>(contacts.size()), stated_path + ".contacts",
+    const long count = read_integer(context, context.member(stated, "contacts", stated_path), stated_path + ".contacts", 0,
+                                    2 * static_cast<long>(max_contact_pairs), "max_contact_pairs");
+    context.require(count == 2 * static_cast<long>(contacts.size()), stated_path + ".contacts",
                     "the checker finds " + std::to_string(2 * contacts.size()) + " contacts");
     const Json& vectors = context.member(stated, "contact_vectors", stated_path);
     if (!vectors.is_array()) context.malformed(stated_path + ".contact_vectors", "expected an array");
@@ -151,7 +151,7 @@ long check_stated_contacts(Context& context, const std::set<Triple>& contacts, c
     }
     context.require(listed_contacts == contacts, enumeration_path + ".contacts",
                     "the listed contacts differ from the checker's (each must be one of the family's identities)");
-    return count.get<long>();
+    return count;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "checker/core/document_check.hpp"
 
+#include "checker/core/limits.hpp"
 #include "checker/core/render.hpp"
 
 namespace superpack_checker {
@@ -33,9 +34,9 @@ void walk(Context& context, const Json& node, const std::string& path) {
 // The producer's description of itself: read (and typed), not checked against anything.
 void read_description(Context& context, const Json& document) {
     for (const char* key : {"tool", "version", "commit", "command", "backend"}) context.string_at(document, key, "");
-    if (!context.member(document, "digits", "").is_number_integer()) context.malformed("digits", "expected an integer");
+    read_integer(context, context.member(document, "digits", ""), "digits", 1, max_digits, "max_digits");
     const Json& checks = context.member(context.member(document, "rounding_self_test", ""), "checks", "rounding_self_test");
-    if (!checks.is_number_integer()) context.malformed("rounding_self_test.checks", "expected an integer");
+    read_integer(context, checks, "rounding_self_test.checks", 0, std::numeric_limits<long>::max());
 }
 
 // Up to 60 characters of `text` from `from`, marked where cut.

@@ -5,6 +5,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace superpack_checker {
 
@@ -44,6 +45,17 @@ constexpr long guard_bits = 64;
 constexpr long min_precision = 128;
 constexpr long max_precision = max_bits + guard_bits;
 
+// How wide a stated enclosure may be (check_encloses): at most enclosure_width_factor times the
+// checker's own enclosure of the same value, plus 2^-(bits - enclosure_slack_bits) max(1, |x|) for
+// the producer's rounding at its own bits. Measured over the 1003 enclosures the checker replays in
+// proofs/ (NOTES.md 8.8): where the checker's own enclosure is as wide as the producer's (witness
+// norms over a piece of p, the superdisk optimum) the stated one is at most 1.73 times wider, hence
+// 4; elsewhere the checker's is about 2^64 narrower and the stated one at most 2^15.3 of the
+// producer's units wide (the cubic crossover's phi*_c), hence 2^20, 27 times that, which still
+// leaves a widened binary64 enclosure no more than 2^-33 of its value.
+constexpr double enclosure_width_factor = 4;
+constexpr long enclosure_slack_bits = 20;
+
 // Exact numbers. A mantissa is exact at the checker's precision, so it has at most
 // max_precision bits, that is max_precision * log10(2) < max_precision * 0.30103 decimal
 // digits (plus one for rounding); an exponent |e| < 10^8 keeps every value within MPFR's
@@ -56,6 +68,11 @@ constexpr std::size_t max_rational_characters = 10000;
 // packing of a superball with 1/2 < p < oo has at most 7 (NOTES.md 11.2.2, item 2); 13 allows the
 // cube's 13 pairs as well.
 constexpr std::size_t max_contact_pairs = 13;
+
+// An integer coefficient of a lattice vector (a contact, a witness, a shift, a candidate) or of a
+// basis change: any 64-bit value but -2^63, so that -c is defined (negating -2^63 is undefined
+// behaviour) and every coefficient read is the file's own value, never one wrapped into range.
+constexpr long max_coefficient = std::numeric_limits<long>::max();
 
 // The critical-lattice claim (claim_critical_lattice.cpp, NOTES.md 12.8). Start boxes: the whole
 // domain has 168, split 8 times (max_domain_split) 168 * 2^8, --around a few. Closing regions:

@@ -249,6 +249,19 @@ Width operator*(double factor, const Width& w) {
     mpfr_mul_d(result.get(), w.get(), factor, MPFR_RNDU);
     return result;
 }
+Width scaled(const Width& w, long exponent) {
+    Width result;
+    mpfr_mul_2si(result.get(), w.get(), exponent, MPFR_RNDU);
+    return result;
+}
+Width magnitude(const Real& x) {
+    Width result(1), end;
+    for (mpfr_srcptr bound : {x.lo(), x.hi()}) {
+        mpfr_abs(end.get(), bound, MPFR_RNDU);
+        mpfr_max(result.get(), result.get(), end.get(), MPFR_RNDU);
+    }
+    return result;
+}
 bool operator<(const Width& a, const Width& b) { return mpfr_less_p(a.get(), b.get()) != 0; }
 bool operator<=(const Width& a, const Width& b) { return mpfr_lessequal_p(a.get(), b.get()) != 0; }
 bool operator>(const Width& a, const Width& b) { return mpfr_greater_p(a.get(), b.get()) != 0; }

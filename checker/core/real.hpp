@@ -71,8 +71,8 @@ bool excludes_zero(const Real& x);
 bool less(const Real& a, const Real& b);
 bool subset(const Real& inner, const Real& outer);           // inner within outer
 bool interior_subset(const Real& inner, const Real& outer);  // inner within the interior of outer
-// The width of an interval, for stopping rules only: 53 bits rounded up, with MPFR's exponent
-// range. A double does not do: below 2^-1074 every width rounds up to the same subnormal, so a
+// The width of an interval, for stopping rules and tolerances only: 53 bits rounded up, with MPFR's
+// exponent range. A double does not do: below 2^-1074 every width rounds up to the same subnormal, so a
 // rule "stop when an iterate no longer shrinks" stopped at about 320 digits, whatever the
 // precision, and left the checker's boxes wider than those of a 700-digit certificate.
 class Width {
@@ -90,6 +90,8 @@ private:
 Width width(const Real& x);
 Width operator+(const Width& a, const Width& b);  // rounded up
 Width operator*(double factor, const Width& w);   // rounded up
+Width scaled(const Width& w, long exponent);      // w 2^exponent
+Width magnitude(const Real& x);                   // max(1, |lo|, |hi|) rounded up: a relative tolerance's scale
 bool operator<(const Width& a, const Width& b);
 bool operator<=(const Width& a, const Width& b);
 bool operator>(const Width& a, const Width& b);

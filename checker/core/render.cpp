@@ -71,6 +71,14 @@ Real proved_enclosure(Context& context, const Json& stated, const std::string& p
     return context.interval(stated, path);
 }
 
+Real proved_below(Context& context, const Json& stated, const std::string& path, const Real& own, long bound) {
+    const Real claimed = proved_enclosure(context, stated, path, own);
+    context.require(less(claimed, integer(bound, context.precision())), path,
+                    "the stated enclosure " + text(claimed) + " is not certainly < " + std::to_string(bound) +
+                        ", which the claim says of it (the checker's: " + text(own) + ")");
+    return claimed;
+}
+
 void check_p_decimal(Context& context, const Json& inputs, const mpq_class& p) {
     const std::string stated = context.string_at(inputs, "p_decimal", "inputs");
     context.require(stated == exact_text(p), "inputs.p_decimal", "\"" + stated.substr(0, 60) + "\" is not p = " + exact_text(p));

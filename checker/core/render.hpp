@@ -30,10 +30,15 @@ std::string exact_text(const mpq_class& q);
 std::string rational_words(const mpq_class& q);
 
 // check_encloses (replay.hpp), returning the stated enclosure it proved to contain the
-// checker's value `own`. Sentences show these stated enclosures, not the checker's own: they
-// are a function of the file alone, so the rendering does not move with the checker's
-// precision or arithmetic, and each is proved to hold the true value.
+// checker's value `own` and to be hardly wider. Sentences show these stated enclosures, not the
+// checker's own: they are a function of the file alone, so the rendering does not move with the
+// checker's precision or arithmetic, and each is proved to hold the true value about as tightly
+// as the checker can.
 Real proved_enclosure(Context& context, const Json& stated, const std::string& path, const Real& own);
+// An enclosure whose claim is a bound ("2p-norm in [...] < 2", "g(x) in [...] < 1"): it must
+// hold the checker's value and lie certainly below `bound` itself, so that what the file states
+// shows the claim (a witness norm widened to [1.97, 3.95] held the checker's and showed no "< 2").
+Real proved_below(Context& context, const Json& stated, const std::string& path, const Real& own, long bound);
 
 // The inputs' "p_decimal" (the user's p as an exact decimal, or a/b) must be exact_text(p).
 void check_p_decimal(Context& context, const Json& inputs, const mpq_class& p);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 
 #include "checker/core/limits.hpp"
 #include "checker/core/tree_walk.hpp"
@@ -258,10 +259,9 @@ void replay_partition_step(Context& context, PartitionStep& step, std::vector<Pa
     const Json& cases = context.member(node, "cases", path);
     if (!cases.is_array()) context.malformed(path + ".cases", "expected an array");
     context.require(cases.size() == 2, path + ".cases", "a split needs both of its cases");
-    const Json& dimension_json = context.member(node, "dimension", path);
-    if (!dimension_json.is_number_unsigned() || dimension_json.get<std::size_t>() >= box.size())
-        context.malformed(path + ".dimension", "not a dimension of the box");
-    auto split = std::make_shared<SplitCover>(SplitCover{path, box, dimension_json.get<std::size_t>(), {}, {}});
+    const auto dimension = static_cast<std::size_t>(read_integer(context, context.member(node, "dimension", path),
+                                                                 path + ".dimension", 0, static_cast<long>(box.size()) - 1));
+    auto split = std::make_shared<SplitCover>(SplitCover{path, box, dimension, {}, {}});
     stack.push_back({nullptr, {}, 0, nullptr, split});
     stack.push_back({&cases[1], path + ".cases[1]", step.depth + 1, &split->right, nullptr});
     stack.push_back({&cases[0], path + ".cases[0]", step.depth + 1, &split->left, nullptr});
@@ -315,6 +315,19 @@ void check_encloses(Context& context, const Json& stated, const std::string& pat
     const Real claimed = context.interval(stated, path);
     context.require(subset(own, claimed), path,
                     "the stated enclosure " + text(claimed) + " does not contain the checker's " + text(own));
+    // Containing the checker's value is not enough: phi widened to [0.80, 1.61] still contains it,
+    // and the sentence prints what the file states. So the stated enclosure may be only a little
+    // wider than the checker's own, plus the producer's rounding (limits.hpp). Part of the same
+    // step: the count of steps is that of the containment check.
+    const Width allowed = enclosure_width_factor * width(own) +
+                          scaled(magnitude(own), enclosure_slack_bits - context.producer_precision());
+    if (!(width(claimed) <= allowed)) {
+        std::ostringstream reason;
+        reason << "wider than the checker's own enclosure " << text(own) << ": " << text(claimed) << " is " << width(claimed)
+               << " wide, more than " << enclosure_width_factor << " times the checker's width plus 2^-(bits - "
+               << enclosure_slack_bits << ") max(1, |x|), " << allowed;
+        context.reject(path, reason.str());
+    }
 }
 
 bool disjoint(const Box& a, const Box& b) {

@@ -68,7 +68,9 @@ Box check_partition(Context& context, const Json& node, const std::string& path,
 void check_root_leaf(Context& context, const System& system, const Json& leaf, const Box& box,
                      const std::string& path, std::vector<Box>* roots);
 
-// Does the stated enclosure (at `path`) contain the checker's own value?
+// Does the stated enclosure (at `path`) contain the checker's own enclosure `own` of the same
+// value, and is it no wider than `own` allows (enclosure_width_factor, enclosure_slack_bits in
+// limits.hpp)? Every caller passes an enclosure the checker computed itself, never one it read.
 void check_encloses(Context& context, const Json& stated, const std::string& path, const Real& own);
 
 bool disjoint(const Box& a, const Box& b);

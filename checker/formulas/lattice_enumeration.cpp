@@ -3,6 +3,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "checker/core/limits.hpp"
 #include "checker/core/real.hpp"
 #include "checker/core/render.hpp"
 
@@ -74,10 +75,9 @@ Reduction replay_reduction(Context& context, const Json& proof, const Matrix& ba
     for (int i = 0; i < 3; ++i) {
         const std::string row = path + ".transform[" + std::to_string(i) + "]";
         if (!transform[i].is_array() || transform[i].size() != 3) context.malformed(row, "expected three integers");
-        for (int j = 0; j < 3; ++j) {
-            if (!transform[i][j].is_number_integer()) context.malformed(row, "expected integers");
-            reduction.transform[i][j] = transform[i][j].get<long>();
-        }
+        for (int j = 0; j < 3; ++j)
+            reduction.transform[i][j] = read_integer(context, transform[i][j], row + "[" + std::to_string(j) + "]",
+                                                     -max_coefficient, max_coefficient, "max_coefficient");
     }
     context.current_step = path;
     const mpz_class det = determinant(reduction.transform);

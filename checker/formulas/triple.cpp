@@ -1,6 +1,5 @@
 #include "checker/formulas/triple.hpp"
 
-#include <cstdint>
 #include <set>
 
 #include "checker/core/limits.hpp"
@@ -14,10 +13,9 @@ std::string triple_text(const Triple& t) {
 Triple read_triple(Context& context, const Json& node, const std::string& path) {
     if (!node.is_array() || node.size() != 3) context.malformed(path, "expected three integers");
     Triple t;
-    for (int k = 0; k < 3; ++k) {
-        if (!node[k].is_number_integer()) context.malformed(path, "expected three integers");
-        t[k] = node[k].get<long>();
-    }
+    for (int k = 0; k < 3; ++k)
+        t[k] = read_integer(context, node[k], path + "[" + std::to_string(k) + "]", -max_coefficient, max_coefficient,
+                            "max_coefficient");
     return t;
 }
 
@@ -28,18 +26,6 @@ bool canonical(const Triple& t) {
 }
 
 Triple representative(const Triple& t) { return canonical(t) ? t : Triple{-t[0], -t[1], -t[2]}; }
-
-long read_integer(Context& context, const Json& node, const std::string& path, long lo, long hi) {
-    const std::string expected = "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
-    if (!node.is_number_integer()) context.malformed(path, expected);
-    // Compared as the JSON value's own type: an unsigned above 2^63 must not wrap into range.
-    if (node.is_number_unsigned() ? hi < 0 || node.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)
-                                  : node.get<std::int64_t>() > hi)
-        context.malformed(path, expected);
-    const long value = static_cast<long>(node.get<std::int64_t>());
-    if (value < lo) context.malformed(path, expected);
-    return value;
-}
 
 std::vector<Triple> read_contact_pairs(Context& context, const Json& node, const std::string& key, const std::string& path) {
     const std::string at = path + "." + key;

@@ -12,6 +12,7 @@ namespace superpack_checker {
 using Triple = std::array<long, 3>;
 
 std::string triple_text(const Triple& t);
+// Three integers, each within +-max_coefficient (malformed at its own path, path[k], otherwise).
 Triple read_triple(Context& context, const Json& node, const std::string& path);
 // One of t, -t: the first nonzero coefficient positive.
 bool canonical(const Triple& t);
@@ -21,7 +22,5 @@ Triple representative(const Triple& t);
 // canonical one of its +-pair and none twice. c and -c give the same constraint (the gradient
 // of the norm is odd), so a claim could otherwise list a pair in two ways and still verify.
 std::vector<Triple> read_contact_pairs(Context& context, const Json& node, const std::string& key, const std::string& path);
-// A JSON integer in [lo, hi] (malformed at `path` otherwise).
-long read_integer(Context& context, const Json& node, const std::string& path, long lo, long hi);
 
 }  // namespace superpack_checker

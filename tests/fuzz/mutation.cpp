@@ -1,6 +1,8 @@
 #include "mutation.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <set>
 
 #include "checker/core/limits.hpp"
@@ -23,6 +25,7 @@ const char* to_string(MutationKind kind) {
         case MutationKind::transplant: return "transplant";
         case MutationKind::truncate: return "truncate";
         case MutationKind::deep_nest: return "deep_nest";
+        case MutationKind::integer_wrap: return "integer_wrap";
     }
     return "?";
 }
@@ -82,6 +85,20 @@ const T& pick(const std::vector<T>& items, std::mt19937_64& random) {
 }
 
 std::size_t below(std::size_t n, std::mt19937_64& random) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(random); }
+
+// What a reader without a range check would wrap or negate: a negative value plus 2^64 (-1 read
+// back as 2^64 - 1), 2^63 (read as -2^63), -2^63 (whose negation is undefined) or 2^64 - 1.
+Json wrapped_integer(const Json& value, std::mt19937_64& random) {
+    switch (below(4, random)) {
+        case 0:
+            if (!value.is_number_unsigned() && value.get<std::int64_t>() < 0)
+                return Json(static_cast<std::uint64_t>(value.get<std::int64_t>()));
+            return Json(Json::number_unsigned_t{1} << 63);
+        case 1: return Json(Json::number_unsigned_t{1} << 63);
+        case 2: return Json(std::numeric_limits<std::int64_t>::min());
+        default: return Json(std::numeric_limits<std::uint64_t>::max());
+    }
+}
 
 // A different digit at one of the digit positions in [from, to) of `text`.
 std::string changed_digit(std::string text, std::size_t from, std::size_t to, std::mt19937_64& random) {
@@ -259,6 +276,15 @@ Mutation mutate(const Json& document, const Sites& sites, MutationKind kind, std
             const std::size_t depth = nesting_depth(random);
             return {spliced(copy, pointer, std::string(depth, '[') + at(pointer).dump() + std::string(depth, ']')),
                     pointer + " in " + std::to_string(depth) + " arrays"};
+        }
+        case MutationKind::integer_wrap: {
+            std::vector<std::string> integers;
+            for (const std::string& pointer : sites.numbers())
+                if (document[Json::json_pointer(pointer)].is_number_integer()) integers.push_back(pointer);
+            if (integers.empty()) break;
+            const std::string& pointer = pick(integers, random);
+            at(pointer) = wrapped_integer(at(pointer), random);
+            return {copy.dump(), pointer};
         }
     }
     // The kind has no site in this document: an unchanged text (accepted, and judged as such).

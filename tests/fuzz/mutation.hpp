@@ -1,5 +1,5 @@
 // Seeded random mutations of a certificate for the checker's fuzz test (NOTES.md 8.8): digits of
-// the exact numbers, signs, keys, types, structure, truncation and deep nesting. Each mutation is
+// the exact numbers, signs, keys, types, structure, truncation, deep nesting and integers beyond 64 bits. Each mutation is
 // given as the text of the mutated file, since several (a duplicate key, a cut, deep nesting)
 // cannot be held by a parsed document.
 #pragma once
@@ -27,8 +27,9 @@ enum class MutationKind {
     transplant,      // a value replaced by a copy of another value of the document
     truncate,        // the file cut at a random byte
     deep_nest,       // a value inside many nested arrays (around and far beyond max_json_depth)
+    integer_wrap,    // a JSON integer replaced by one a 64-bit reader would wrap or negate (issue 44)
 };
-constexpr int mutation_kinds = 14;
+constexpr int mutation_kinds = 15;
 const char* to_string(MutationKind kind);
 
 // The places of one document that each kind can act on (JSON pointers), found once.
