@@ -79,6 +79,13 @@ T decided(Contracted<T> answer, const Field&, long digits, long maximum_digits) 
     return std::move(*answer.value);
 }
 
+// decided() of a driver call in a command that computes in binary64 only (no --digits: critical,
+// simulate, md): the refusal's message names binary64 and suggests no precision.
+template <class Compute>
+auto decided_in_binary64(const Compute& compute) {
+    return decided(within_contract(compute), DoubleField{}, 0, 0);
+}
+
 // Builds and writes a certificate. A builder that refuses its candidate or a failed write is a
 // usage error with the reason (never an internal one); a contract's refusal while building is
 // undecided, as in decided().

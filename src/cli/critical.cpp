@@ -187,12 +187,14 @@ void run_merge(const CriticalCommandOptions& command) {
     options.gap = parse_number(documents.front().gap, "gap of " + command.merge.front());
     require_critical_domain(options.p, options.gap);
     std::cerr << "critical --merge: certifying the densest lattice at p (best) to recompute T\n";
-    const CriticalResult<DInterval> setup = critical_setup(critical_reference(options.p, DoubleField{}), options);
+    const CriticalResult<DInterval> setup =
+        decided_in_binary64([&] { return critical_setup(critical_reference(options.p, DoubleField{}), options); });
     const Json threshold = enclosure_json(setup.threshold);
     for (std::size_t k = 0; k < documents.size(); ++k)
         if (documents[k].threshold != threshold)
             throw InputError("critical --merge: '" + command.merge[k] + "' has another T than this superpack computes at its p and gap");
-    print_result(merge_shards(setup, summaries), options, documents.front().p_exact, true, command.json);
+    print_result(decided_in_binary64([&] { return merge_shards(setup, summaries); }), options, documents.front().p_exact, true,
+                 command.json);
 }
 
 // --cover: the shards' certificates named by one cover certificate, which the checker replays in
@@ -208,7 +210,7 @@ void run_cover(const CriticalCommandOptions& command) {
     std::cerr << "critical --cover: replaying the " << parts.names.size() << " certificates with the checker on "
               << command.threads << (command.threads == 1 ? " thread\n" : " threads\n");
     const std::string directory = std::filesystem::absolute(command.certificate).parent_path().string();
-    const Json document = critical_cover_certificate(parts, directory, command.threads);
+    const Json document = decided_in_binary64([&] { return critical_cover_certificate(parts, directory, command.threads); });
     write_certificate(command.certificate, document);
     const std::string claim = document["claim"]["text"].get<std::string>();
     if (command.json) {
@@ -259,7 +261,7 @@ int run(const CriticalCommandOptions& command) {
     options.around = command.around.empty() ? 0 : parse_around(command.around);
     const DoubleField field;
     std::cerr << "critical: certifying the densest lattice at p (best)\n";
-    const CriticalReference<DInterval> reference = critical_reference(options.p, field);
+    const CriticalReference<DInterval> reference = decided_in_binary64([&] { return critical_reference(options.p, field); });
     options.record_trees = !command.certificate.empty();
     options.progress = [](const CriticalProgress& progress) {
         std::cerr << "critical: " << progress.seconds << " s, " << progress.processed << " boxes evaluated, "
@@ -268,10 +270,10 @@ int run(const CriticalCommandOptions& command) {
                                                progress.counts[static_cast<int>(BoxReason::undecided_budget)]
                   << " undecided\n";
     };
-    const CriticalResult<DInterval> result = critical_bound(reference, options);
+    const CriticalResult<DInterval> result = decided_in_binary64([&] { return critical_bound(reference, options); });
     if (!command.certificate.empty() && result.status == Outcome::proved) {
         std::cerr << "critical: replaying the certificate with the checker\n";
-        write_certificate(command.certificate, critical_certificate(result, options));
+        write_certificate(command.certificate, decided_in_binary64([&] { return critical_certificate(result, options); }));
     }
     print_result(result, options, command.p, false, command.json);
     return exit_ok;

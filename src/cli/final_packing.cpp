@@ -40,7 +40,7 @@ void require_packing_files(const PackingFiles& files) {
 
 BestLattice<DInterval> reference_lattice(const Rational& p, const std::string& command) {
     std::cerr << command << ": certifying the best lattice at p = " << decimal_or_fraction_text(p) << " for comparison\n";
-    BestLattice<DInterval> best = find_best_lattice(p, DoubleField{}, BestOptions{});
+    BestLattice<DInterval> best = decided_in_binary64([&] { return find_best_lattice(p, DoubleField{}, BestOptions{}); });
     if (best.status != Outcome::proved)
         throw Failure(exit_undecided, command + ": no certified lattice at p = " + decimal_or_fraction_text(p) + " to compare with");
     return best;

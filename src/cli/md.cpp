@@ -122,7 +122,7 @@ sim::PeriodicConfiguration md_start(const MdOptions& options, const std::optiona
         start = sim::random_configuration(shape, options.particles, random_start_phi, random);
     } else {
         if (family) {
-            const FamilyLattice<DInterval> lattice = enclose_family(*family, p, field);
+            const FamilyLattice<DInterval> lattice = decided_in_binary64([&] { return enclose_family(*family, p, field); });
             if (lattice.status != Outcome::proved || !lattice.basis)
                 throw Failure(exit_undecided, "md: the family " + options.init + " is not certified at p = " + options.p);
             start = lattice_start(*lattice.basis, options.particles, 1);
@@ -175,8 +175,8 @@ int run(const MdOptions& options) {
     const sim::EventMdResult run = run_dynamics(shape, start, run_options, seconds);
 
     std::cerr << "md: proving the final packing\n";
-    const PeriodicCertificate<DInterval> proof =
-        prove_end_state(p, simulation_end_state(run.configuration), separation_guess(shape, run.configuration));
+    const PeriodicCertificate<DInterval> proof = decided_in_binary64(
+        [&] { return prove_end_state(p, simulation_end_state(run.configuration), separation_guess(shape, run.configuration)); });
     const bool certified = proof.status == Outcome::proved;
 
     Json document = header_json("md", field, 15);

@@ -73,7 +73,7 @@ sim::PeriodicConfiguration simulate_start(const SimulateOptions& options, const 
                                           const BestLattice<DInterval>& best) {
     sim::PeriodicConfiguration start;
     if (family) {
-        const FamilyLattice<DInterval> lattice = enclose_family(*family, p, field);
+        const FamilyLattice<DInterval> lattice = decided_in_binary64([&] { return enclose_family(*family, p, field); });
         if (lattice.status != Outcome::proved || !lattice.basis)
             throw Failure(exit_undecided, "simulate: the family " + options.init + " is not certified at p = " + options.p);
         start = lattice_start(*lattice.basis, options.particles, lattice_expansion);
@@ -129,8 +129,8 @@ int run(const SimulateOptions& options) {
 
     // The proof: exact rounding, a separating plane per close pair (sim's guess), scaled if needed.
     std::cerr << "simulate: proving the final packing\n";
-    const PeriodicCertificate<DInterval> proof =
-        prove_end_state(p, simulation_end_state(run.configuration), separation_guess(shape, run.configuration));
+    const PeriodicCertificate<DInterval> proof = decided_in_binary64(
+        [&] { return prove_end_state(p, simulation_end_state(run.configuration), separation_guess(shape, run.configuration)); });
     const bool certified = proof.status == Outcome::proved;
 
     Json document = header_json("simulate", field, 15);
