@@ -118,13 +118,14 @@ DomainMembership family_domain(Family family, const Rational& p) {
         for (int k = 0; k < 300; ++k) power *= 10;
         return power;
     }();
-    const std::string p_text = "p = " + decimal_or_fraction_text(p);
+    // The text of p only for a reason: printing a rational costs more than the test itself.
+    const auto p_text = [&p] { return "p = " + decimal_or_fraction_text(p); };
     if (p > largest)
-        return {DomainStatus::outside, p_text + " is beyond the supported p <= 10^300 of " + definition.name +
+        return {DomainStatus::outside, p_text() + " is beyond the supported p <= 10^300 of " + definition.name +
                                            " (the floating-point guesses need 2p to be a finite binary64 number)"};
     DomainMembership membership = definition.domain(p);
     if (membership.status == DomainStatus::outside && membership.reason.empty())
-        membership.reason = p_text + " is outside the domain of " + definition.name + " (" + definition.domain_text + ")";
+        membership.reason = p_text() + " is outside the domain of " + definition.name + " (" + definition.domain_text + ")";
     return membership;
 }
 
