@@ -98,11 +98,8 @@ int run(const CrossoverOptions& options) {
                 certificate =
                     decided(within_contract([&] { return octahedral_crossover_certificate(crossover, field, digits); }), field, digits, max_digits);
         }
-        if (!certificate.is_null()) try {
-                write_certificate(options.certificate, certificate);
-            } catch (const std::runtime_error& error) {
-                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
-            }
+        if (!certificate.is_null())
+            write_certificate_or_fail(options.certificate, field, digits, max_digits, [&] { return certificate; });
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         document["seconds"] = seconds;
         if (options.json) print_json(document);

@@ -87,11 +87,7 @@ int run(const DensityOptions& options) {
         if (!options.certificate.empty() && lattice.status == Outcome::proved) {
             const Json certificate =
                 decided(within_contract([&] { return family_certificate(lattice, p, field, digits); }), field, digits, max_digits);
-            try {
-                write_certificate(options.certificate, certificate);
-            } catch (const std::runtime_error& error) {
-                throw Failure(exit_usage, std::string("no certificate written: ") + error.what());
-            }
+            write_certificate_or_fail(options.certificate, field, digits, max_digits, [&] { return certificate; });
         }
         if (options.json) {
             Json document = header_json("density", field, digits);
