@@ -13,6 +13,7 @@ judges a mutated interval without the checker:
             lattice's witness point x (g(x) and g(x - v), g = sum |x_i|^(2p));
   covers:   a list of intervals (argmin_t) that must hold each given value;
   within_original: a range the claim holds on (a piece of p), which may only shrink.
+A periodic-packing claim (simulate, md) has no interval: every value must equal the original.
 An audit piece claims its witness norm for every p of the piece: the rule lists the norm at both
 ends of the piece (at its point for overlapping_at_point), which the true range contains.
 Each value is checked against the committed certificate before it is written, so a wrong formula
@@ -310,6 +311,15 @@ def star_lattice_check(data):
             "/claim/data/witness/values/1": text(gauge([x[j] - v[j] for j in range(3)]))}
 
 
+def periodic_packing(data):
+    """Nothing to enclose: the claim (p, the cell rows, each particle's centre and quaternion, all
+    exact rationals, and packing: true) states its density as N V_sb(p) / |det B| with |det B| exact,
+    no interval, so every value must equal the original (the checker's sentence prints each one,
+    and a file whose claim.text differs is rejected). Should an interval appear in claim.data or
+    inputs, main() stops with "no reference for" it."""
+    return {}
+
+
 def rules(document):
     claim, data = document["claim"], document["claim"]["data"]
     kind = claim["kind"]
@@ -335,6 +345,8 @@ def rules(document):
         ranges = ["/claim/data/threshold"]  # the bound the claim is about: it may only stay as it is
     elif kind == "star-lattice-check":
         values = star_lattice_check(data)
+    elif kind == "periodic-packing":
+        values = periodic_packing(data)
     elif kind == "audit":
         values = audit(data)
         ranges = ["/claim/data/range", "/inputs/range", "/claim/data/pieces/*/p"]
