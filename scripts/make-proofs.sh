@@ -116,3 +116,16 @@ certify best-p0.3 best --p 0.3
 # 12.8): 82 boxes closed by the determinant bound or C1's closing region, each tree replayed by
 # the checker. The whole domain's trees would exceed the checker's 256 MiB file limit.
 certify critical-p2-around-C1 critical --p 2 --around 1e-5
+
+# Periodic packings with N particles per cell (NOTES 14, 15; kind periodic-packing): the end state
+# of a run rounded to exact rationals and proved a packing by separating planes, which the checker
+# replays after enumerating the close pairs itself. simulate at p = 2, N = 2, seed 1 (about 2 s),
+# from C1 2% expanded: the run ends 0.034% below C1 (it finds no two-particle cell denser than the
+# lattice: evidence, not proof, NOTES 14.5); the proof needed the configuration scaled by
+# 549755814453/549755813888 = 1 + 1.03e-9 (the rounding of the orientations), and the checker's
+# support function takes its MPFI power path (s = 2p/(2p - 1) = 4/3). md at p = 0.6, N = 8,
+# growth 0.1, seed 1 (about 3 s): eight growing near-octahedra jam from a random start at
+# phi = 0.724, 82% of D14 (49 pairs, no scaling), and the support function takes its exact
+# integer-exponent path (s = 6).
+certify simulate-p2-n2 simulate --p 2 --n 2 --seed 1
+certify md-p0.6-n8 md --p 0.6 --n 8 --growth 0.1 --seed 1

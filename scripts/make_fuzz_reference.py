@@ -8,10 +8,12 @@ judges a mutated interval without the checker:
             (make_golden.py, make_crossover_reference.py, make_superdisk_golden.py,
             make_superdisk_vertices.py, make_lattice_data.py, make_d14_golden.py, make_s6_golden.py)
             or computed here from the paper's
-            equations (derivatives of s and c at p = 1, witness norms of the audits) or from the
-            KKT system of a local optimum (its basis, multipliers and phi);
+            equations (derivatives of s and c at p = 1, witness norms of the audits), from the
+            KKT system of a local optimum (its basis, multipliers and phi) or from a concave
+            lattice's witness point x (g(x) and g(x - v), g = sum |x_i|^(2p));
   covers:   a list of intervals (argmin_t) that must hold each given value;
   within_original: a range the claim holds on (a piece of p), which may only shrink.
+A periodic-packing claim (simulate, md) has no interval: every value must equal the original.
 An audit piece claims its witness norm for every p of the piece: the rule lists the norm at both
 ends of the piece (at its point for overlapping_at_point), which the true range contains.
 Each value is checked against the committed certificate before it is written, so a wrong formula
@@ -294,6 +296,30 @@ def critical_lattice(data):
     return {"/claim/data/volume": text(volume), "/claim/data/upper_phi": text(volume / threshold)}
 
 
+def star_lattice_check(data):
+    """A concave superball's lattice (p < 1/2, NOTES.md 13.5): a packing states no interval; an
+    overlap's witness states g(x) and g(x - v), g(y) = sum |y_i|^(2p), at its rational point x and
+    its lattice vector v = coefficients B, both computed here from the exact point and basis."""
+    if "witness" not in data:
+        return {}
+    p = as_mpf(Fraction(data["p"]))
+    basis = [[as_mpf(Fraction(x)) for x in row] for row in data["basis"]]
+    v = combine(basis, data["witness"]["coefficients"])
+    x = [as_mpf(Fraction(t)) for t in data["witness"]["point"]]
+    gauge = lambda y: sum(fabs(t) ** (2 * p) for t in y)
+    return {"/claim/data/witness/values/0": text(gauge(x)),
+            "/claim/data/witness/values/1": text(gauge([x[j] - v[j] for j in range(3)]))}
+
+
+def periodic_packing(data):
+    """Nothing to enclose: the claim (p, the cell rows, each particle's centre and quaternion, all
+    exact rationals, and packing: true) states its density as N V_sb(p) / |det B| with |det B| exact,
+    no interval, so every value must equal the original (the checker's sentence prints each one,
+    and a file whose claim.text differs is rejected). Should an interval appear in claim.data or
+    inputs, main() stops with "no reference for" it."""
+    return {}
+
+
 def rules(document):
     claim, data = document["claim"], document["claim"]["data"]
     kind = claim["kind"]
@@ -317,6 +343,10 @@ def rules(document):
     elif kind == "critical-lattice":
         values = critical_lattice(data)
         ranges = ["/claim/data/threshold"]  # the bound the claim is about: it may only stay as it is
+    elif kind == "star-lattice-check":
+        values = star_lattice_check(data)
+    elif kind == "periodic-packing":
+        values = periodic_packing(data)
     elif kind == "audit":
         values = audit(data)
         ranges = ["/claim/data/range", "/inputs/range", "/claim/data/pieces/*/p"]

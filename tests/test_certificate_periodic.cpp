@@ -342,7 +342,7 @@ TEST_CASE("periodic-packing: the producer's certificates verify") {
     packing.quaternions = {{1, 0, 0, 0}, {1, 0, 0, 1}};
     const auto proved = certify_periodic_packing(packing, {}, DoubleField{});
     REQUIRE(proved.status == Outcome::proved);
-    const Document written = Document::parse(periodic_certificate(proved, DoubleField{}, 15).dump());
+    const Document written = Document::parse(periodic_certificate(proved, DoubleField{}, 15, "simulate").dump());
     const auto report = verify_document(written);
     INFO(report.path << ": " << report.message);
     CHECK(report.verdict == Verdict::valid);
@@ -357,5 +357,5 @@ TEST_CASE("periodic-packing: the producer's certificates verify") {
     const BallField arb{82};
     const auto scaled = certify_periodic_packing(balls, {}, arb);
     REQUIRE(scaled.status == Outcome::proved);
-    CHECK(verify_document(Document::parse(periodic_certificate(scaled, arb, 15).dump())).verdict == Verdict::valid);
+    CHECK(verify_document(Document::parse(periodic_certificate(scaled, arb, 15, "simulate").dump())).verdict == Verdict::valid);
 }

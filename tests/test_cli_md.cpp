@@ -2,6 +2,7 @@
 // the certified phi of the jammed end state), the certificate it writes and the seed. Short runs
 // of spheres (p = 1) and superballs at fast growth, about a second each.
 #include <algorithm>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -70,6 +71,9 @@ TEST_CASE("md: a superball run writes a certificate the checker accepts, and the
     INFO(verified.out << verified.err);
     CHECK(verified.status == 0);
     CHECK(verified.out.find("is a packing") != std::string::npos);
+    // The certificate names the command that wrote it (it said "simulate" before).
+    std::ifstream file(certificate);
+    CHECK(nlohmann::json::parse(file, nullptr, false).value("command", "") == "md");
     const nlohmann::json second = certified_document(run(command));
     CHECK(first.at("phi") == second.at("phi"));
     CHECK(first.at("configuration") == second.at("configuration"));

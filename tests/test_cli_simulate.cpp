@@ -253,6 +253,7 @@ TEST_CASE("simulate --certificate: `superpack verify` accepts the certificate") 
     const Run verified = run("verify " + path);
     INFO(verified.err);
     CHECK(verified.status == 0);
+    CHECK(nlohmann::json::parse(contents(path)).value("command", "") == "simulate");
 }
 
 TEST_CASE("simulate: the same seed gives the same certified packing") {

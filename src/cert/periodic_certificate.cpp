@@ -24,7 +24,8 @@ Json periodic_packing_json(const PeriodicPacking& packing) {
 }
 
 template <class Field>
-Json periodic_certificate(const PeriodicCertificate<typename Field::Interval>& proved, const Field& field, long digits) {
+Json periodic_certificate(const PeriodicCertificate<typename Field::Interval>& proved, const Field& field, long digits,
+                          const std::string& command) {
     if (proved.status != Outcome::proved) throw std::runtime_error("certificate: the periodic packing is not proved");
     Json data = periodic_packing_json(proved.packing);
     data["packing"] = true;
@@ -37,11 +38,11 @@ Json periodic_certificate(const PeriodicCertificate<typename Field::Interval>& p
     const Json proof{{"kind", "separating-planes"}, {"radius", rational_text(proved.radius)}, {"pairs", pairs}};
     const Rational& p = proved.packing.p;
     const Json inputs{{"p", rational_text(p)}, {"p_decimal", decimal_or_fraction_text(p)}, {"particles", proved.packing.centers.size()}};
-    return certificate_document(certificate_head("simulate", field, digits), Json{{"kind", "periodic-packing"}, {"data", data}}, inputs,
+    return certificate_document(certificate_head(command, field, digits), Json{{"kind", "periodic-packing"}, {"data", data}}, inputs,
                                 proof);
 }
 
-template Json periodic_certificate(const PeriodicCertificate<DInterval>&, const DoubleField&, long);
-template Json periodic_certificate(const PeriodicCertificate<Ball>&, const BallField&, long);
+template Json periodic_certificate(const PeriodicCertificate<DInterval>&, const DoubleField&, long, const std::string&);
+template Json periodic_certificate(const PeriodicCertificate<Ball>&, const BallField&, long, const std::string&);
 
 }  // namespace superpack

@@ -96,7 +96,7 @@ void print_proof(std::ostream& out, const PeriodicCertificate<DInterval>& proof,
 void write_packing_files(const PackingFiles& files, const PeriodicCertificate<DInterval>& proof, const std::string& command) {
     if (proof.status != Outcome::proved) return;
     if (!files.certificate.empty())
-        write_certificate_or_fail(files.certificate, DoubleField{}, 15, 0, [&] { return periodic_certificate(proof, DoubleField{}, 15); });
+        write_certificate_or_fail(files.certificate, DoubleField{}, 15, 0, [&] { return periodic_certificate(proof, DoubleField{}, 15, command); });
     const DecimalEnclosure phi = to_decimal(*proof.phi, 12);
     const std::string comment = "superpack " + command + ": certified phi in " + phi.lo + " .. " + phi.hi;
     if (!files.xyz.empty()) write_atomically(files.xyz, extended_xyz(proof.packing, comment));
