@@ -142,9 +142,7 @@ TEST_CASE("local-optimum: the checker's KKT values and Jacobian, derived by hand
         const superpack_checker::KktEquations equations{contacts, superpack_checker::rational(superpack::parse_rational(p_text), 128)};
         superpack_checker::Box box;
         for (const auto& xi : x) {
-            superpack_checker::Real r(128);
-            mpfi_interv_d(r.get(), xi.lower(), xi.upper());
-            box.push_back(r);
+            box.push_back(superpack_checker::doubles(xi.lower(), xi.upper(), 128));
         }
         const auto own = equations.value(box);
         const auto own_jacobian = equations.jacobian(box);
@@ -158,16 +156,16 @@ TEST_CASE("local-optimum: the checker's KKT values and Jacobian, derived by hand
             for (std::size_t i = 0; i < n; ++i) {
                 INFO("entry (" << i << ", " << j << "): checker " << superpack_checker::text(own_jacobian[i][j]) << ", producer ["
                                << column[i].derivative.lower() << ", " << column[i].derivative.upper() << "]");
-                superpack_checker::Real producer(128);
-                mpfi_interv_d(producer.get(), column[i].derivative.lower(), column[i].derivative.upper());
+                const superpack_checker::Real producer =
+                    superpack_checker::doubles(column[i].derivative.lower(), column[i].derivative.upper(), 128);
                 superpack_checker::Real meet(128);
                 CHECK(superpack_checker::intersect(meet, own_jacobian[i][j], producer));
                 ++compared;
             }
         }
         for (std::size_t i = 0; i < n; ++i) {
-            superpack_checker::Real producer(128), meet(128);
-            mpfi_interv_d(producer.get(), values[i].lower(), values[i].upper());
+            const superpack_checker::Real producer = superpack_checker::doubles(values[i].lower(), values[i].upper(), 128);
+            superpack_checker::Real meet(128);
             CHECK(superpack_checker::intersect(meet, own[i], producer));
         }
         CHECK(compared == static_cast<long>(n * n));

@@ -272,8 +272,8 @@ TEST_CASE("a file beyond max_file_bytes, a directory or a missing file is unread
 TEST_CASE("checker predicates never hold for an interval with a NaN end; widths compare below 2^-1074") {
     using namespace superpack_checker;
     Real undefined(128);
-    mpfr_set_nan(&undefined.get()->left);
-    mpfr_set_nan(&undefined.get()->right);
+    mpfr_set_nan(undefined.lower_end());
+    mpfr_set_nan(undefined.upper_end());
     const Real wide = hull(integer(-1000, 128), integer(1000, 128));
     CHECK_FALSE(subset(undefined, wide));
     CHECK_FALSE(interior_subset(undefined, wide));

@@ -16,11 +16,7 @@ using superpack_checker::Real;
 
 constexpr mpfr_prec_t bits = 128;
 
-Real point(double e, mpfr_prec_t precision) {
-    Real x(precision);
-    mpfi_set_d(x.get(), e);
-    return x;
-}
+Real point(double e, mpfr_prec_t precision) { return superpack_checker::doubles(e, e, precision); }
 
 // log2 of hi / lo - 1, as a count of ulps at `bits` (0 for a point).
 double relative_width_ulps(const Real& x) {
@@ -70,8 +66,7 @@ TEST_CASE("checker powers at exact exponents a/b: tight, exact at dyadic values,
 
 TEST_CASE("checker |x|^y across 0 at exact exponents: [0, max] for y > 0, and the kernel's sign") {
     const superpack_checker::Exponent y = superpack_checker::exponent(mpq_class(6, 5), bits);
-    Real x(bits);
-    mpfi_interv_d(x.get(), -0.5, 1);
+    const Real x = superpack_checker::doubles(-0.5, 1, bits);
     const Real value = superpack_checker::chart_pow_abs(x, y);
     CHECK(mpfr_zero_p(value.lo()));
     CHECK(mpfr_cmp_d(value.hi(), 1) == 0);

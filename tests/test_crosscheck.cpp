@@ -18,9 +18,7 @@ constexpr int evaluations = 10000;  // per function and per producer backend
 constexpr mpfr_prec_t checker_bits = 128;
 
 Real checker_interval(double lo, double hi) {
-    Real x(checker_bits);
-    mpfi_interv_d(x.get(), lo, hi);  // exact: both ends are doubles
-    return x;
+    return superpack_checker::doubles(lo, hi, checker_bits);  // exact: both ends are doubles
 }
 
 template <class I>

@@ -151,7 +151,7 @@ Support support(const Vector& u, const mpq_class& p, mpfr_prec_t precision) {
         mpfr_inits2(precision, down, up, static_cast<mpfr_ptr>(nullptr));
         mpfr_rootn_ui(down, enclosed.lo(), n, MPFR_RNDD);
         mpfr_rootn_ui(up, enclosed.hi(), n, MPFR_RNDU);
-        mpfi_interv_fr(result.factor.get(), down, up);
+        result.factor = outward(down, up, precision);
         mpfr_clears(down, up, static_cast<mpfr_ptr>(nullptr));
         return result;
     }

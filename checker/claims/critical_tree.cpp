@@ -24,9 +24,7 @@ std::vector<Triple> max_norm_orbit(Configuration configuration) {
 }
 
 Real with_end(const Real& x, mpfr_srcptr end, bool lower) {
-    Real r(x.precision());
-    mpfi_interv_fr(r.get(), lower ? end : x.lo(), lower ? x.hi() : end);
-    return r;
+    return outward(lower ? end : x.lo(), lower ? x.hi() : end, x.precision());
 }
 
 // e misses [a, b].

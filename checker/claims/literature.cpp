@@ -86,10 +86,7 @@ std::string printed_value_words(Printed which, const Real& x) {
 
 Real slope_closed_form(Printed which, mpfr_prec_t precision) {
     if (which != Printed::a_plus && which != Printed::a_minus) throw std::logic_error("no closed form of a slope");
-    Real pi(precision), root2(precision);
-    mpfi_const_pi(pi.get());
-    mpfi_sqrt(root2.get(), integer(2, precision).get());
-    const Real factor = -(pi / (12 * root2));
+    const Real factor = -(pi(precision) / (12 * sqrt(integer(2, precision))));
     const Real psis = 4 * digamma(rational(mpq_class(1, 2), precision)) + 2 * digamma(rational(mpq_class(3, 2), precision)) -
                       6 * digamma(rational(mpq_class(5, 2), precision));
     const Real constant = which == Printed::a_plus ? integer(24, precision) + log(integer(8, precision))

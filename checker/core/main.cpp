@@ -20,7 +20,7 @@ constexpr int exit_valid = 0, exit_invalid = 1, exit_unreadable = 2;
 
 const char* const usage =
     "usage: superpack-verify [--json] [--threads N] [--] FILE\n"
-    "Replays a superpack certificate with the independent checker (MPFI, its own formulas).\n"
+    "Replays a superpack certificate with the independent checker (its own interval arithmetic on MPFR, its own formulas).\n"
     "  --json         print one JSON document on stdout\n"
     "  --threads N    files of a critical-lattice-cover replayed at once, 1 to 64 (default: the cores)\n"
     "Exit: 0 valid, 1 invalid (the first failing step is named), 2 unreadable or bad usage.\n";
@@ -60,7 +60,7 @@ int run(const std::string& file, bool json, int threads) {
         }
         std::cout << document.dump(2) << "\n";
     } else if (report.verdict == Verdict::valid) {
-        std::cout << "valid: " << report.rendered_claim << "\n  (" << report.steps << " steps checked with MPFI at "
+        std::cout << "valid: " << report.rendered_claim << "\n  (" << report.steps << " steps checked with MPFR intervals at "
                   << report.precision << " bits)\n";
     }
     if (report.verdict == Verdict::invalid) {

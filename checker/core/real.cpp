@@ -7,28 +7,90 @@
 
 namespace superpack_checker {
 
-Real::Real(mpfr_prec_t precision) : precision_(precision) {
-    mpfi_init2(value_, precision);
-    mpfi_set_si(value_, 0);
+namespace {
+std::size_t limbs_for(mpfr_prec_t precision) {
+    return static_cast<std::size_t>((precision + GMP_NUMB_BITS - 1) / GMP_NUMB_BITS);
 }
-Real::Real(const Real& other) : precision_(other.precision_) {
-    mpfi_init2(value_, precision_);
-    mpfi_set(value_, other.value_);
+
+// Sets `to` (of the same precision as `from`, with its own significand `storage`) to `from` by
+// MPFR's custom interface: the kind (sign and class), exponent and significand limbs are
+// copied as they are, which is exact and skips mpfr_set's rounding logic.
+void copy_end(mpfr_ptr to, mp_limb_t* storage, mpfr_srcptr from, mpfr_prec_t precision) {
+    const int kind = mpfr_custom_get_kind(from);
+    const bool regular = kind == MPFR_REGULAR_KIND || kind == -MPFR_REGULAR_KIND;
+    if (regular) {
+        const mp_limb_t* limbs = static_cast<const mp_limb_t*>(mpfr_custom_get_significand(from));
+        std::copy(limbs, limbs + limbs_for(precision), storage);  // a loop: a call to memmove cost more
+    }
+    mpfr_custom_init_set(to, kind, regular ? mpfr_custom_get_exp(from) : 0, precision, storage);
 }
-Real::Real(Real&& other) noexcept : Real(other) {}
+}  // namespace
+
+void Real::attach(mpfr_prec_t precision) {
+    precision_ = precision;
+    const std::size_t limbs = limbs_for(precision);
+    mp_limb_t* storage = inline_;
+    std::size_t stride = inline_limbs;
+    if (limbs > inline_limbs) {
+        heap_.reset(new mp_limb_t[2 * limbs]);
+        storage = heap_.get();
+        stride = limbs;
+    } else if (heap_) {
+        heap_.reset();
+    }
+    mpfr_custom_init(storage, precision);
+    mpfr_custom_init(storage + stride, precision);
+    mpfr_custom_init_set(&value_->left, MPFR_ZERO_KIND, 0, precision, storage);
+    mpfr_custom_init_set(&value_->right, MPFR_ZERO_KIND, 0, precision, storage + stride);
+}
+
+void Real::copy_ends(const Real& other) {
+    copy_end(&value_->left, static_cast<mp_limb_t*>(mpfr_custom_get_significand(&value_->left)), other.lo(), precision_);
+    copy_end(&value_->right, static_cast<mp_limb_t*>(mpfr_custom_get_significand(&value_->right)), other.hi(), precision_);
+}
+
+Real::Real(mpfr_prec_t precision) { attach(precision); }
+Real::Real(const Real& other) {
+    attach(other.precision_);
+    copy_ends(other);
+}
 Real& Real::operator=(const Real& other) {
     if (this != &other) {
-        mpfi_set_prec(value_, other.precision_);
-        precision_ = other.precision_;
-        mpfi_set(value_, other.value_);
+        if (precision_ != other.precision_) attach(other.precision_);
+        copy_ends(other);
     }
     return *this;
 }
-Real& Real::operator=(Real&& other) noexcept { return *this = static_cast<const Real&>(other); }
-Real::~Real() { mpfi_clear(value_); }
 
 namespace {
 mpfr_prec_t joint(const Real& a, const Real& b) { return std::max(a.precision(), b.precision()); }
+
+bool undefined(const Real& x) { return mpfr_nan_p(x.lo()) || mpfr_nan_p(x.hi()); }
+
+Real undefined_real(mpfr_prec_t precision) {
+    Real r(precision);
+    mpfr_set_nan(r.lower_end());
+    mpfr_set_nan(r.upper_end());
+    return r;
+}
+
+bool zero_point(const Real& x) { return mpfr_zero_p(x.lo()) && mpfr_zero_p(x.hi()); }
+
+// Where an interval lies: at or above 0, at or below 0, or across 0 (both ends off it).
+enum class Side { nonnegative, nonpositive, across };
+Side side(const Real& x) {
+    if (mpfr_sgn(x.lo()) >= 0) return Side::nonnegative;
+    if (mpfr_sgn(x.hi()) <= 0) return Side::nonpositive;
+    return Side::across;
+}
+
+// [f(lo) rounded down, f(hi) rounded up] for an increasing f given by an MPFR function.
+Real increasing(const Real& x, int (*f)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t)) {
+    Real r(x.precision());
+    f(r.lower_end(), x.lo(), MPFR_RNDD);
+    f(r.upper_end(), x.hi(), MPFR_RNDU);
+    return r;
+}
 
 // x^y at one point e >= 0 of the base, for every y in the exponent interval.
 Real power_at(mpfr_srcptr e, const Real& y) {
@@ -41,92 +103,178 @@ Real power_at(mpfr_srcptr e, const Real& y) {
     // as tight as the producer's products (a stored enclosure must contain the checker's).
     if (mpfr_equal_p(y.lo(), y.hi()) && mpfr_integer_p(y.lo()) && mpfr_cmp_ui(y.lo(), 1) >= 0 && mpfr_cmp_ui(y.lo(), 64) <= 0) {
         const unsigned long n = mpfr_get_ui(y.lo(), MPFR_RNDN);
-        mpfr_t down, up;
-        mpfr_inits2(y.precision(), down, up, static_cast<mpfr_ptr>(nullptr));
-        mpfr_pow_ui(down, e, n, MPFR_RNDD);
-        mpfr_pow_ui(up, e, n, MPFR_RNDU);
-        mpfi_interv_fr(point.get(), down, up);
-        mpfr_clears(down, up, static_cast<mpfr_ptr>(nullptr));
+        mpfr_pow_ui(point.lower_end(), e, n, MPFR_RNDD);
+        mpfr_pow_ui(point.upper_end(), e, n, MPFR_RNDU);
         return point;
     }
-    mpfi_set_fr(point.get(), e);
-    return exp(y * log(point));
+    return exp(y * log(outward(e, e, y.precision())));
 }
 }  // namespace
 
 Real integer(long n, mpfr_prec_t precision) {
     Real result(precision);
-    mpfi_set_si(result.get(), n);
+    mpfr_set_si(result.lower_end(), n, MPFR_RNDD);
+    mpfr_set_si(result.upper_end(), n, MPFR_RNDU);
     return result;
 }
 
 Real rational(const mpq_class& q, mpfr_prec_t precision) {
     Real result(precision);
-    mpfi_set_q(result.get(), q.get_mpq_t());
+    mpfr_set_q(result.lower_end(), q.get_mpq_t(), MPFR_RNDD);
+    mpfr_set_q(result.upper_end(), q.get_mpq_t(), MPFR_RNDU);
     return result;
 }
 
 bool exact_interval(Real& result, mpfr_srcptr lo, mpfr_srcptr hi) {
     Real candidate(result.precision());
-    if (mpfi_interv_fr(candidate.get(), lo, hi) != 0) return false;
+    const bool reversed = mpfr_greater_p(lo, hi);
+    const int inexact_lo = mpfr_set(candidate.lower_end(), reversed ? hi : lo, MPFR_RNDD);
+    const int inexact_hi = mpfr_set(candidate.upper_end(), reversed ? lo : hi, MPFR_RNDU);
+    if (inexact_lo != 0 || inexact_hi != 0) return false;
     result = candidate;
     return true;
 }
 
+Real outward(mpfr_srcptr lo, mpfr_srcptr hi, mpfr_prec_t precision) {
+    Real r(precision);
+    const bool reversed = mpfr_greater_p(lo, hi);
+    mpfr_set(r.lower_end(), reversed ? hi : lo, MPFR_RNDD);
+    mpfr_set(r.upper_end(), reversed ? lo : hi, MPFR_RNDU);
+    return r;
+}
+
+Real doubles(double lo, double hi, mpfr_prec_t precision) {
+    Real r(precision);
+    mpfr_set_d(r.lower_end(), std::min(lo, hi), MPFR_RNDD);
+    mpfr_set_d(r.upper_end(), std::max(lo, hi), MPFR_RNDU);
+    return r;
+}
+
+Real pi(mpfr_prec_t precision) {
+    Real r(precision);
+    mpfr_const_pi(r.lower_end(), MPFR_RNDD);
+    mpfr_const_pi(r.upper_end(), MPFR_RNDU);
+    return r;
+}
+
 Real operator+(const Real& a, const Real& b) {
     Real r(joint(a, b));
-    mpfi_add(r.get(), a.get(), b.get());
+    mpfr_add(r.lower_end(), a.lo(), b.lo(), MPFR_RNDD);
+    mpfr_add(r.upper_end(), a.hi(), b.hi(), MPFR_RNDU);
     return r;
 }
 Real operator-(const Real& a, const Real& b) {
     Real r(joint(a, b));
-    mpfi_sub(r.get(), a.get(), b.get());
+    mpfr_sub(r.lower_end(), a.lo(), b.hi(), MPFR_RNDD);
+    mpfr_sub(r.upper_end(), a.hi(), b.lo(), MPFR_RNDU);
     return r;
 }
 Real operator*(const Real& a, const Real& b) {
+    if (undefined(a) || undefined(b)) return undefined_real(joint(a, b));
     Real r(joint(a, b));
-    mpfi_mul(r.get(), a.get(), b.get());
+    // The point 0 times anything is 0. Elsewhere an end product 0 times an infinite end is left
+    // NaN, as MPFI leaves it: it needs a factor [oo, oo], an overflow, which decides nothing.
+    if (zero_point(a) || zero_point(b)) return r;
+    mpfr_ptr lo = r.lower_end();
+    mpfr_ptr hi = r.upper_end();
+    const Side sa = side(a), sb = side(b);
+    // Which ends meet at the extremes, by the sides of 0 the factors lie on.
+    if (sa == Side::nonnegative && sb == Side::nonnegative) {
+        mpfr_mul(lo, a.lo(), b.lo(), MPFR_RNDD);
+        mpfr_mul(hi, a.hi(), b.hi(), MPFR_RNDU);
+    } else if (sa == Side::nonnegative && sb == Side::nonpositive) {
+        mpfr_mul(lo, a.hi(), b.lo(), MPFR_RNDD);
+        mpfr_mul(hi, a.lo(), b.hi(), MPFR_RNDU);
+    } else if (sa == Side::nonpositive && sb == Side::nonnegative) {
+        mpfr_mul(lo, a.lo(), b.hi(), MPFR_RNDD);
+        mpfr_mul(hi, a.hi(), b.lo(), MPFR_RNDU);
+    } else if (sa == Side::nonpositive && sb == Side::nonpositive) {
+        mpfr_mul(lo, a.hi(), b.hi(), MPFR_RNDD);
+        mpfr_mul(hi, a.lo(), b.lo(), MPFR_RNDU);
+    } else if (sa == Side::nonnegative) {  // b across 0
+        mpfr_mul(lo, a.hi(), b.lo(), MPFR_RNDD);
+        mpfr_mul(hi, a.hi(), b.hi(), MPFR_RNDU);
+    } else if (sa == Side::nonpositive) {
+        mpfr_mul(lo, a.lo(), b.hi(), MPFR_RNDD);
+        mpfr_mul(hi, a.lo(), b.lo(), MPFR_RNDU);
+    } else if (sb == Side::nonnegative) {  // a across 0
+        mpfr_mul(lo, a.lo(), b.hi(), MPFR_RNDD);
+        mpfr_mul(hi, a.hi(), b.hi(), MPFR_RNDU);
+    } else if (sb == Side::nonpositive) {
+        mpfr_mul(lo, a.hi(), b.lo(), MPFR_RNDD);
+        mpfr_mul(hi, a.lo(), b.lo(), MPFR_RNDU);
+    } else {  // both across 0: the smaller of the two negative products, the larger positive one
+        Real other(r.precision());
+        mpfr_mul(lo, a.lo(), b.hi(), MPFR_RNDD);
+        mpfr_mul(other.lower_end(), a.hi(), b.lo(), MPFR_RNDD);
+        mpfr_min(lo, lo, other.lo(), MPFR_RNDD);
+        mpfr_mul(hi, a.lo(), b.lo(), MPFR_RNDU);
+        mpfr_mul(other.upper_end(), a.hi(), b.hi(), MPFR_RNDU);
+        mpfr_max(hi, hi, other.hi(), MPFR_RNDU);
+    }
     return r;
 }
 Real operator/(const Real& a, const Real& b) {
     if (!excludes_zero(b)) throw std::domain_error("division by an interval that may contain 0");
     Real r(joint(a, b));
-    mpfi_div(r.get(), a.get(), b.get());
+    mpfr_ptr lo = r.lower_end();
+    mpfr_ptr hi = r.upper_end();
+    const Side sa = side(a);
+    if (positive(b)) {
+        mpfr_div(lo, a.lo(), sa == Side::nonnegative ? b.hi() : b.lo(), MPFR_RNDD);
+        mpfr_div(hi, a.hi(), sa == Side::nonpositive ? b.hi() : b.lo(), MPFR_RNDU);
+    } else {
+        mpfr_div(lo, a.hi(), sa == Side::nonpositive ? b.lo() : b.hi(), MPFR_RNDD);
+        mpfr_div(hi, a.lo(), sa == Side::nonnegative ? b.lo() : b.hi(), MPFR_RNDU);
+    }
     return r;
 }
 Real operator-(const Real& a) {
     Real r(a.precision());
-    mpfi_neg(r.get(), a.get());
+    mpfr_neg(r.lower_end(), a.hi(), MPFR_RNDD);  // exact
+    mpfr_neg(r.upper_end(), a.lo(), MPFR_RNDU);
     return r;
 }
 Real operator*(long n, const Real& a) { return integer(n, a.precision()) * a; }
 
-Real exp(const Real& x) {
-    Real r(x.precision());
-    mpfi_exp(r.get(), x.get());
-    return r;
-}
+Real exp(const Real& x) { return increasing(x, mpfr_exp); }
 Real log(const Real& x) {
     if (!positive(x)) throw std::domain_error("log of an interval that may be <= 0");
-    Real r(x.precision());
-    mpfi_log(r.get(), x.get());
-    return r;
+    return increasing(x, mpfr_log);
 }
-Real expm1(const Real& x) {
-    Real r(x.precision());
-    mpfi_expm1(r.get(), x.get());
-    return r;
-}
+Real expm1(const Real& x) { return increasing(x, mpfr_expm1); }
 Real log1p(const Real& x) {
     if (!positive(x + integer(1, x.precision()))) throw std::domain_error("log1p of an interval that may be <= -1");
-    Real r(x.precision());
-    mpfi_log1p(r.get(), x.get());
-    return r;
+    return increasing(x, mpfr_log1p);
 }
 Real abs(const Real& x) {
+    switch (side(x)) {
+        case Side::nonnegative: return x;
+        case Side::nonpositive: return -x;
+        case Side::across: break;
+    }
     Real r(x.precision());
-    mpfi_abs(r.get(), x.get());
+    mpfr_set_zero(r.lower_end(), 1);
+    mpfr_neg(r.upper_end(), x.lo(), MPFR_RNDU);
+    mpfr_max(r.upper_end(), r.upper_end(), x.hi(), MPFR_RNDU);
     return r;
+}
+Real square(const Real& x) {
+    if (side(x) != Side::across) {
+        const Real a = abs(x);
+        Real r(x.precision());
+        mpfr_sqr(r.lower_end(), a.lo(), MPFR_RNDD);
+        mpfr_sqr(r.upper_end(), a.hi(), MPFR_RNDU);
+        return r;
+    }
+    Real r(x.precision());
+    mpfr_set_zero(r.lower_end(), 1);
+    mpfr_sqr(r.upper_end(), mpfr_cmpabs(x.lo(), x.hi()) > 0 ? x.lo() : x.hi(), MPFR_RNDU);
+    return r;
+}
+Real sqrt(const Real& x) {
+    if (mpfr_sgn(x.lo()) < 0) throw std::domain_error("sqrt of an interval that may be < 0");
+    return increasing(x, mpfr_sqrt);
 }
 
 Real pow_abs(const Real& x, const Real& y) {
@@ -151,12 +299,8 @@ Real gamma(const Real& x) {
     // sign of psi at the ends decides monotonicity, and the maximum is at an end.
     Real gamma_lo(precision), gamma_hi(precision), psi_lo(precision), psi_hi(precision);
     auto at = [&](Real& result, int (*function)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t), mpfr_srcptr point) {
-        mpfr_t down, up;
-        mpfr_inits2(precision, down, up, static_cast<mpfr_ptr>(nullptr));
-        function(down, point, MPFR_RNDD);
-        function(up, point, MPFR_RNDU);
-        mpfi_interv_fr(result.get(), down, up);
-        mpfr_clears(down, up, static_cast<mpfr_ptr>(nullptr));
+        function(result.lower_end(), point, MPFR_RNDD);
+        function(result.upper_end(), point, MPFR_RNDU);
     };
     at(gamma_lo, mpfr_gamma, x.lo());
     at(gamma_hi, mpfr_gamma, x.hi());
@@ -174,20 +318,15 @@ Real gamma(const Real& x) {
 }
 
 Real hull(const Real& a, const Real& b) {
+    // A NaN end spreads, where MPFR's min and max would drop it: what is undefined stays so.
+    if (undefined(a) || undefined(b)) return undefined_real(joint(a, b));
     Real r(joint(a, b));
-    mpfi_union(r.get(), a.get(), b.get());
+    mpfr_min(r.lower_end(), a.lo(), b.lo(), MPFR_RNDD);
+    mpfr_max(r.upper_end(), a.hi(), b.hi(), MPFR_RNDU);
     return r;
 }
-Real lower_point(const Real& x) {
-    Real r(x.precision());
-    mpfi_interv_fr(r.get(), x.lo(), x.lo());
-    return r;
-}
-Real upper_point(const Real& x) {
-    Real r(x.precision());
-    mpfi_interv_fr(r.get(), x.hi(), x.hi());
-    return r;
-}
+Real lower_point(const Real& x) { return outward(x.lo(), x.lo(), x.precision()); }
+Real upper_point(const Real& x) { return outward(x.hi(), x.hi(), x.precision()); }
 Real midpoint(const Real& x) {
     mpfr_t center;
     mpfr_init2(center, x.precision());
@@ -195,16 +334,14 @@ Real midpoint(const Real& x) {
     // mpfi_mid rounds to nearest; clamp so that the point lies in x whatever happened.
     if (mpfr_cmp(center, x.lo()) < 0) mpfr_set(center, x.lo(), MPFR_RNDN);
     if (mpfr_cmp(center, x.hi()) > 0) mpfr_set(center, x.hi(), MPFR_RNDN);
-    Real r(x.precision());
-    mpfi_interv_fr(r.get(), center, center);
+    Real r = outward(center, center, x.precision());
     mpfr_clear(center);
     return r;
 }
 bool intersect(Real& result, const Real& a, const Real& b) {
     if (mpfr_cmp(a.hi(), b.lo()) < 0 || mpfr_cmp(b.hi(), a.lo()) < 0) return false;
-    Real r(joint(a, b));
-    mpfi_interv_fr(r.get(), mpfr_cmp(a.lo(), b.lo()) > 0 ? a.lo() : b.lo(), mpfr_cmp(a.hi(), b.hi()) < 0 ? a.hi() : b.hi());
-    result = r;
+    result = outward(mpfr_cmp(a.lo(), b.lo()) > 0 ? a.lo() : b.lo(), mpfr_cmp(a.hi(), b.hi()) < 0 ? a.hi() : b.hi(),
+                     joint(a, b));
     return true;
 }
 

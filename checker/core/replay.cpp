@@ -43,9 +43,7 @@ bool invert(std::vector<std::vector<double>>& a, std::vector<std::vector<double>
 }
 
 Real exact_double(double x, mpfr_prec_t precision) {
-    Real result(precision);
-    mpfi_set_d(result.get(), x);  // exact: precision >= 53
-    return result;
+    return doubles(x, x, precision);  // exact: precision >= 53
 }
 
 }  // namespace

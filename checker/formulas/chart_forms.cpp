@@ -104,9 +104,7 @@ ChartPoint slopes(const Gradient& g) {
 }
 
 Real point(double x, mpfr_prec_t precision) {
-    Real r(precision);
-    mpfi_set_d(r.get(), x);  // exact: precision >= 53
-    return r;
+    return doubles(x, x, precision);  // exact: precision >= 53
 }
 
 }  // namespace
@@ -253,8 +251,7 @@ Real median(const Real& x) {
     mpfr_add(m, half_lo, half_hi, MPFR_RNDN);
     if (mpfr_less_p(m, x.lo())) mpfr_set(m, x.lo(), MPFR_RNDN);
     if (mpfr_greater_p(m, x.hi())) mpfr_set(m, x.hi(), MPFR_RNDN);
-    Real r(x.precision());
-    mpfi_interv_fr(r.get(), m, m);
+    Real r = outward(m, m, x.precision());
     mpfr_clears(half_lo, half_hi, m, static_cast<mpfr_ptr>(nullptr));
     return r;
 }

@@ -15,21 +15,17 @@ Real power_at(mpfr_srcptr e, const Real& y, const ExactExponent& exact) {
         if (!positive(y)) throw std::domain_error("0^y with y possibly <= 0");
         return Real(precision);
     }
-    Real base(precision);
-    mpfi_set_fr(base.get(), e);
-    if (exact.denominator == 0) return exp(y * log(base));
+    if (exact.denominator == 0) return exp(y * log(outward(e, e, precision)));
     const unsigned long magnitude = static_cast<unsigned long>(exact.numerator < 0 ? -exact.numerator : exact.numerator);
-    mpfr_t down, up;
-    mpfr_inits2(precision, down, up, static_cast<mpfr_ptr>(nullptr));
+    Real power(precision);
+    mpfr_ptr down = power.lower_end();
+    mpfr_ptr up = power.upper_end();
     mpfr_pow_ui(down, e, magnitude, MPFR_RNDD);
     mpfr_pow_ui(up, e, magnitude, MPFR_RNDU);
     if (exact.denominator > 1) {
         mpfr_rootn_ui(down, down, exact.denominator, MPFR_RNDD);
         mpfr_rootn_ui(up, up, exact.denominator, MPFR_RNDU);
     }
-    Real power(precision);
-    mpfi_interv_fr(power.get(), down, up);
-    mpfr_clears(down, up, static_cast<mpfr_ptr>(nullptr));
     return exact.numerator >= 0 ? power : integer(1, precision) / power;
 }
 
@@ -50,10 +46,8 @@ PowerPair powers_at(mpfr_srcptr e, const Exponent& y) {
             return {power_at(e, y.y, y.exact), integer(1, precision)};
         throw std::domain_error("0^(y-1) with y - 1 possibly <= 0");
     }
-    Real base(precision);
-    mpfi_set_fr(base.get(), e);
     const Real value = power_at(e, y.y, y.exact);
-    return {value, value / base};
+    return {value, value / outward(e, e, precision)};
 }
 
 }  // namespace

@@ -11,13 +11,9 @@ Real ln2(mpfr_prec_t precision) { return log(integer(2, precision)); }
 
 Real digamma(const Real& x) {
     if (!positive(x)) throw std::domain_error("digamma of an interval that may be <= 0");
-    mpfr_t down, up;
-    mpfr_inits2(x.precision(), down, up, static_cast<mpfr_ptr>(nullptr));
-    mpfr_digamma(down, x.lo(), MPFR_RNDD);
-    mpfr_digamma(up, x.hi(), MPFR_RNDU);
     Real result(x.precision());
-    mpfi_interv_fr(result.get(), down, up);
-    mpfr_clears(down, up, static_cast<mpfr_ptr>(nullptr));
+    mpfr_digamma(result.lower_end(), x.lo(), MPFR_RNDD);
+    mpfr_digamma(result.upper_end(), x.hi(), MPFR_RNDU);
     return result;
 }
 

@@ -21,22 +21,6 @@ std::size_t first_unproved_pivot(const std::vector<std::vector<Real>>& m) {
     return n;
 }
 
-namespace {
-
-Real square(const Real& x) {
-    Real r(x.precision());
-    mpfi_sqr(r.get(), x.get());
-    return r;
-}
-
-Real square_root(const Real& x) {
-    Real r(x.precision());
-    mpfi_sqrt(r.get(), x.get());
-    return r;
-}
-
-}  // namespace
-
 std::size_t first_unproved_cholesky_pivot(const std::vector<std::vector<Real>>& m) {
     const std::size_t n = m.size();
     const mpfr_prec_t precision = m[0][0].precision();
@@ -45,7 +29,7 @@ std::size_t first_unproved_cholesky_pivot(const std::vector<std::vector<Real>>& 
         Real pivot = m[j][j];
         for (std::size_t k = 0; k < j; ++k) pivot = pivot - square(l[j][k]);
         if (!positive(pivot)) return j;
-        l[j][j] = square_root(pivot);
+        l[j][j] = sqrt(pivot);
         for (std::size_t i = j + 1; i < n; ++i) {
             Real sum = m[i][j];
             for (std::size_t k = 0; k < j; ++k) sum = sum - l[i][k] * l[j][k];
