@@ -42,7 +42,7 @@ void collect_leaves(const std::string& tree, std::size_t& at, std::vector<Token>
     while (tree[at] == 'C') skip_round(tree, at);
     const char letter = tree[at];
     if (letter == 'S') {
-        ++at;
+        at += 2;  // 'S' and the split coordinate
         collect_leaves(tree, at, leaves);
         collect_leaves(tree, at, leaves);
         return;
@@ -99,7 +99,7 @@ TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it 
     first_leaf(document, 'd');
 }
 
-TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, an image, a start box, T") {
+TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a split, an image, a start box, T") {
     const Document& original = certificate_around_c1();
 
     SECTION("a determinant leaf said to have no configuration point") {
@@ -140,6 +140,28 @@ TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a
         tree[cut + 2] = tree[cut + 2] == 'l' ? 'h' : 'l';
         copy["proof"]["trees"][0] = tree;
         CHECK(rejected_at(copy).rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("a split at another coordinate than the producer's (the cuts below refer to its halves)") {
+        Document copy = original;
+        std::string tree = copy["proof"]["trees"][0];
+        const std::size_t split = tree.find('S');
+        REQUIRE(split != std::string::npos);
+        tree[split + 1] = static_cast<char>('0' + (tree[split + 1] - '0' + 1) % 6);
+        copy["proof"]["trees"][0] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("a split with no coordinate, or coordinate 6, is malformed") {
+        for (const char* replacement : {"S", "S6"}) {
+            Document copy = original;
+            std::string tree = copy["proof"]["trees"][0];
+            const std::size_t split = tree.find('S');
+            REQUIRE(split != std::string::npos);
+            tree.replace(split, 2, replacement);
+            copy["proof"]["trees"][0] = tree;
+            const auto report = verify_document(copy);
+            CHECK(report.verdict == Verdict::malformed);
+            CHECK(report.path.rfind(tree_path(0), 0) == 0);
+        }
     }
     SECTION("a start box removed with its tree: the claim is another one") {
         Document copy = original;

@@ -138,7 +138,7 @@ private:
         }
         if (emptied_by >= 0) malformed("after a cut that emptied the box the leaf must be 'E'");
         switch (terminal) {
-            case 'S': split(node, stack); return;
+            case 'S': split(node, stack, digit("a split coordinate 0..5", '5')); return;
             case 'n': leaf_no_configuration(x); return;
             case 'r': leaf_relabelled(x); return;
             case 'v': leaf_volume(x); return;
@@ -254,15 +254,15 @@ private:
         return end;
     }
 
-    void split(Pending& node, std::vector<Pending>& stack) {
+    // Any coordinate is sound: the two halves cover the box, and each is replayed.
+    void split(Pending& node, std::vector<Pending>& stack, int k) {
         if (node.depth + 1 > max_tree_depth)
             malformed("splits nested deeper than " + std::to_string(max_tree_depth) + " (max_tree_depth)");
-        const int widest = widest_coordinate(node.x);
-        const Real middle = median(node.x[widest]);
+        const Real middle = median(node.x[k]);
         if (!binary64_box_end(middle.lo())) reject("the median of a split is nonzero and below 2^-1000 in size");
         Pending lower{node.x, node.depth + 1}, upper{node.x, node.depth + 1};
-        lower.x[widest] = with_end(node.x[widest], middle.lo(), false);
-        upper.x[widest] = with_end(node.x[widest], middle.lo(), true);
+        lower.x[k] = with_end(node.x[k], middle.lo(), false);
+        upper.x[k] = with_end(node.x[k], middle.lo(), true);
         stack.push_back(std::move(upper));  // the lower half's node comes first in pre-order
         stack.push_back(std::move(lower));
     }

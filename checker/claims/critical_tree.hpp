@@ -5,12 +5,13 @@
 //     node     := round* terminal
 //     round    := 'C' pivots step* ';'          pivots: three of '0'..'5', or "---"
 //     step     := form coord ('l' hex16 | 'h' hex16 | 'x')
-//     terminal := 'S' node node | 'E' | 'n' | 'r' | 'v' | 'd' | 's' ddd | 'c' digits '.'
+//     terminal := 'S' coord node node | 'E' | 'n' | 'r' | 'v' | 'd' | 's' ddd | 'c' digits '.'
 //
 // A round computes the forms over its box (chart_forms.hpp) and proves each cut slab free of
 // what a leaf would have to decide: the preconditioned F_0..F_2 ('0'..'2') exclude 0 on it, or
 // the Lagrangian ('3') misses [V_lo, T] and [-T, -V_lo]. 'x' cuts the whole box ('E' follows).
-// 'S' splits at the median of the widest coordinate. The first-order leaves (n: some g_i has one
+// 'S' splits at the median of the coordinate that follows it ('0'..'5', the producer's choice:
+// any coordinate is sound, since both halves are replayed). The first-order leaves (n: some g_i has one
 // sign; r: an orbit vector is longer than b1 in the max norm; v: |det| < V_lo; d: |det| > T on
 // the configuration, by the Lagrangian) are proved on the box after the rounds; the lattice
 // leaves (s: a short vector; c: the box maps into a closing region) on the box of the last round,

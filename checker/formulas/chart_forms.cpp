@@ -259,20 +259,4 @@ Real median(const Real& x) {
     return r;
 }
 
-int widest_coordinate(const ChartPoint& x) {
-    mpfr_t widest, w;
-    mpfr_inits2(53, widest, w, static_cast<mpfr_ptr>(nullptr));
-    int index = 0;
-    mpfr_sub(widest, x[0].hi(), x[0].lo(), MPFR_RNDU);
-    for (int k = 1; k < chart_dimension; ++k) {
-        mpfr_sub(w, x[k].hi(), x[k].lo(), MPFR_RNDU);
-        if (mpfr_greater_p(w, widest)) {
-            mpfr_swap(w, widest);
-            index = k;
-        }
-    }
-    mpfr_clears(widest, w, static_cast<mpfr_ptr>(nullptr));
-    return index;
-}
-
 }  // namespace superpack_checker

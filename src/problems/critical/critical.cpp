@@ -130,7 +130,7 @@ struct CriticalDriver {
     Examined<Box, Leaf> examine(const Box& box, Visit& visit) const {
         const BoxDecision decision = decide_box(box, context, visit.letters);
         if (decision.reason) return leaf_of<Box>(Leaf{box, *decision.reason});
-        if (visit.letters) *visit.letters += 'S';
+        if (visit.letters) *visit.letters += std::string{'S', static_cast<char>('0' + split_coordinate(decision.box))};
         return split_of<Box, Leaf>(decision.box);
     }
     std::array<Box, 2> split(const Box& box) const { return split_box(box); }

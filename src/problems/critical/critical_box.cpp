@@ -62,10 +62,33 @@ double widest_width(const ChartPoint& x) { return width_upper(x[widest_coordinat
 constexpr double worth_another_round = 0.25;
 constexpr int contraction_rounds = 4;
 
+// The coordinate to split a box at that the contractors left: the one whose term |dL/dx_k| w_k
+// of the Lagrangian's mean-value form is largest (the "smear" rule: the Lagrangian decides the
+// determinant leaves, most of all), among the coordinates at least 2^-20 as wide as the widest;
+// the widest when every such term is 0. Any choice is sound (both halves are decided); this one
+// more than halves the boxes against the widest coordinate (NOTES.md 12.10).
+int smear_coordinate(const LinearForm& lagrange, const ChartPoint& x) {
+    const int widest = widest_coordinate(x);
+    const double floor = std::ldexp(width_upper(x[widest]), -20);
+    int chosen = widest;
+    double largest = 0;
+    for (int k = 0; k < chart_dimension; ++k) {
+        const double width = width_upper(x[k]);
+        if (!(width >= floor) || width == 0) continue;
+        const double score = std::max(std::fabs(lagrange.slope[k].lower()), std::fabs(lagrange.slope[k].upper())) * width;
+        if (score > largest) {
+            largest = score;
+            chosen = k;
+        }
+    }
+    return chosen;
+}
+
 // Reasons 1-4 of NOTES 12.3 and the contractors: a leaf's reason, or nothing with x the box
-// contracted and `basis` an enclosure of the chart basis over the (uncontracted) box.
-std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x, Basis<I>& basis, const BoxContext& context,
-                                           std::string* trace) {
+// contracted, `basis` an enclosure of the chart basis over the (uncontracted) box and `split`
+// the coordinate to split x at.
+std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x, Basis<I>& basis, int& split,
+                                           const BoxContext& context, std::string* trace) {
     const I& two_p = context.two_p;
     // The leaf's letter in the certificate's tree grammar (NOTES.md 12.8).
     auto leaf = [trace](BoxReason reason, const char* letter) {
@@ -104,6 +127,7 @@ std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x
     if (!contract_linear(lagrange, {hull(low, high), hull(-high, -low)}, x, forms.center, '3', trace))
         return leaf(BoxReason::determinant, ";E");
     if (trace) *trace += ';';
+    split = smear_coordinate(lagrange, x);
     return std::nullopt;
 }
 
@@ -166,7 +190,8 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
             if (trace) round_start = trace->size();
             ChartPoint x = box.x;
             Basis<I> basis;
-            decision.reason = first_order_tests(box, x, basis, context, trace);
+            int split = -1;
+            decision.reason = first_order_tests(box, x, basis, split, context, trace);
             if (decision.reason) return true;
             bool shrunk = false;
             for (int k = 0; k < chart_dimension; ++k)
@@ -174,6 +199,7 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
             if (!shrunk || round == contraction_rounds) {
                 decision.reason = lattice_tests(box, basis, context, trace);
                 box.x = x;
+                box.split = split;
                 return false;
             }
             box.x = x;
@@ -184,6 +210,7 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
         // a fractional power is a coordinate or a sum in [1, 3]): split, and at the floor undecided.
         // The round that threw leaves nothing in the trace: the split is of the box it started with.
         if (trace) trace->resize(round_start);
+        box.split = -1;
         if (widest_width(box.x) < context.min_width) decision.reason = BoxReason::undecided_contract;
         return decision;
     }
@@ -192,13 +219,16 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
     return decision;
 }
 
+int split_coordinate(const ChartBox<I>& box) { return box.split >= 0 ? box.split : widest_coordinate(box.x); }
+
 std::array<ChartBox<I>, 2> split_box(const ChartBox<I>& box) {
-    const int widest = widest_coordinate(box.x);
+    const int k = split_coordinate(box);
     std::array<ChartBox<I>, 2> halves{box, box};
-    const I middle = midpoint(box.x[widest]);
-    halves[0].x[widest] = hull(lower_point(box.x[widest]), middle);
-    halves[1].x[widest] = hull(middle, upper_point(box.x[widest]));
+    const I middle = midpoint(box.x[k]);
+    halves[0].x[k] = hull(lower_point(box.x[k]), middle);
+    halves[1].x[k] = hull(middle, upper_point(box.x[k]));
     halves[0].depth = halves[1].depth = box.depth + 1;
+    halves[0].split = halves[1].split = -1;
     return halves;
 }
 

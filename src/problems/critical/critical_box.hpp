@@ -32,10 +32,13 @@ struct BoxDecision {
 };
 // With a trace, the box's rounds and its leaf letter are appended in the tree grammar of the
 // critical-lattice certificate (NOTES.md 12.8); a box to split gets its rounds only (the
-// caller appends 'S' and its halves).
+// caller appends 'S', the split coordinate's digit and its halves). A box to split carries its
+// split coordinate in box.split.
 BoxDecision decide_box(const ChartBox<DInterval>& box, const BoxContext& context, std::string* trace = nullptr);
 
-// The two halves of the box along its widest coordinate.
+// The coordinate split_box splits at: box.split, or the widest when it is -1.
+int split_coordinate(const ChartBox<DInterval>& box);
+// The two halves of the box at the binary64 median of split_coordinate(box), lower half first.
 std::array<ChartBox<DInterval>, 2> split_box(const ChartBox<DInterval>& box);
 
 }  // namespace superpack

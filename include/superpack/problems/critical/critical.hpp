@@ -51,6 +51,9 @@ struct ChartBox {
     int face2 = 0, face3 = 0;
     std::array<I, chart_dimension> x;
     int depth = 0;
+    // The coordinate to split this box at (decide_box's choice from its last round's forms,
+    // NOTES.md 12.3), or -1: the widest (the rule of split_domain).
+    int split = -1;
 };
 
 // The top-level boxes of the whole domain, in a fixed order: both configurations, every pair of
