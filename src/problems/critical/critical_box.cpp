@@ -66,7 +66,7 @@ constexpr int contraction_rounds = 4;
 // of the Lagrangian's mean-value form is largest (the "smear" rule: the Lagrangian decides the
 // determinant leaves, most of all), among the coordinates at least 2^-20 as wide as the widest;
 // the widest when every such term is 0. Any choice is sound (both halves are decided); this one
-// more than halves the boxes against the widest coordinate (NOTES.md 12.10).
+// more than halves the boxes at p = 2 against the widest coordinate (NOTES.md 12.10).
 int smear_coordinate(const LinearForm& lagrange, const ChartPoint& x) {
     const int widest = widest_coordinate(x);
     const double floor = std::ldexp(width_upper(x[widest]), -20);
@@ -127,7 +127,9 @@ std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x
     if (!contract_linear(lagrange, {hull(low, high), hull(-high, -low)}, x, forms.center, '3', trace))
         return leaf(BoxReason::determinant, ";E");
     if (trace) *trace += ';';
-    split = smear_coordinate(lagrange, x);
+    // Where |det| < T at the centre only a short vector (or the volume) can decide the box, and
+    // the Lagrangian's slopes say nothing about that test: there the widest coordinate is split.
+    split = certainly_less(abs(lagrange.at_center), high) ? widest_coordinate(x) : smear_coordinate(lagrange, x);
     return std::nullopt;
 }
 
