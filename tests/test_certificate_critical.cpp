@@ -1,7 +1,8 @@
 // Certificates of claim kind "critical-lattice" (superpack critical --certificate FILE, NOTES.md
 // 12.8): the boxes around C1's images at p = 2 and gap 0 certify, and the checker rejects, each at
-// a named tree, a changed leaf reason, a removed leaf, a cut moved to the other side, a closing
-// region leaf pointed at another image, a removed start box and a raised T.
+// a named tree, a changed leaf reason (a symmetric leaf among them), a removed leaf, a cut moved to
+// the other side, a split at another coordinate (and one without a coordinate, malformed), a
+// closing region leaf pointed at another image, a removed start box and a raised T.
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,10 +20,11 @@ using superpack_checker::verify_document;
 using superpack::test::rejected_at;
 using Document = nlohmann::json;
 
-// critical at p = 2, gap 0, on the boxes of half-width 1e-5 around C1's images, with its trees.
+// critical at p = 2, gap 0, on the boxes of half-width 3e-5 around C1's images, with its trees
+// (at 1e-5 two boxes are symmetric leaves and the two others close at once).
 const Document& certificate_around_c1() {
     static const Document document =
-        superpack::test::critical_certificate_at_p2([](superpack::CriticalOptions& options) { options.around = 1e-5; });
+        superpack::test::critical_certificate_at_p2([](superpack::CriticalOptions& options) { options.around = 3e-5; });
     return document;
 }
 
@@ -74,6 +76,15 @@ std::pair<std::size_t, Token> first_leaf(const Document& document, char letter) 
 
 std::string tree_path(std::size_t k) { return "proof.trees[" + std::to_string(k) + "]"; }
 
+// The first tree with a split (the trees of start boxes outside the fundamental domain are one 'm').
+std::size_t first_split_tree(const Document& document) {
+    const Document& trees = document["proof"]["trees"];
+    for (std::size_t k = 0; k < trees.size(); ++k)
+        if (trees[k].get<std::string>().find('S') != std::string::npos) return k;
+    FAIL("no tree with a split");
+    return 0;
+}
+
 // The first leaf of `letter` replaced by change(leaf) must be rejected at its tree.
 void check_leaf_change_rejected(const Document& original, char letter,
                                 const std::function<std::string(const std::string&)>& change) {
@@ -87,7 +98,7 @@ void check_leaf_change_rejected(const Document& original, char letter,
 
 }  // namespace
 
-TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it verifies, with both leaf kinds near C1") {
+TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it verifies, with the leaf kinds near C1") {
     const Document& document = certificate_around_c1();
     const auto report = verify_document(document);
     INFO(report.path << ": " << report.message);
@@ -97,9 +108,10 @@ TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it 
     CHECK(document["proof"]["regions"][0]["images"].size() == 4);
     first_leaf(document, 'c');
     first_leaf(document, 'd');
+    first_leaf(document, 'm');
 }
 
-TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a split, an image, a start box, T") {
+TEST_CASE("critical-lattice tampering: a leaf's reason (symmetric too), a removed leaf, a cut, a split, an image, a start box, T") {
     const Document& original = certificate_around_c1();
 
     SECTION("a determinant leaf said to have no configuration point") {
@@ -107,6 +119,15 @@ TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a
     }
     SECTION("a closing-region leaf said to be a determinant leaf") {
         check_leaf_change_rejected(original, 'c', [](const std::string&) { return std::string("d"); });
+    }
+    SECTION("a symmetric leaf said to be a determinant leaf") {
+        check_leaf_change_rejected(original, 'm', [](const std::string&) { return std::string("d"); });
+    }
+    SECTION("a determinant leaf said to be symmetric (it lies in the fundamental domain)") {
+        check_leaf_change_rejected(original, 'd', [](const std::string&) { return std::string("m"); });
+    }
+    SECTION("a closing-region leaf said to be symmetric") {
+        check_leaf_change_rejected(original, 'c', [](const std::string&) { return std::string("m"); });
     }
     SECTION("a closing-region leaf pointed at another image") {
         check_leaf_change_rejected(original, 'c', [](const std::string& leaf) {
@@ -116,18 +137,20 @@ TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a
     }
     SECTION("the last leaf of a tree removed (a box left uncovered)") {
         Document copy = original;
-        std::string tree = copy["proof"]["trees"][0];
+        const std::size_t k = first_split_tree(copy);
+        std::string tree = copy["proof"]["trees"][k];
         const std::vector<Token> leaves = leaves_of(tree);
         REQUIRE(leaves.size() > 1);
         tree.erase(leaves.back().offset, leaves.back().length);
-        copy["proof"]["trees"][0] = tree;
+        copy["proof"]["trees"][k] = tree;
         const auto report = verify_document(copy);
         CHECK(report.verdict != Verdict::valid);
-        CHECK(report.path.rfind(tree_path(0), 0) == 0);
+        CHECK(report.path.rfind(tree_path(k), 0) == 0);
     }
     SECTION("a cut moved to the other side of the coordinate") {
         Document copy = original;
-        std::string tree = copy["proof"]["trees"][0];
+        const std::size_t k = first_split_tree(copy);
+        std::string tree = copy["proof"]["trees"][k];
         // The first cut: a step with side 'l' or 'h' in some round (a round may have none).
         std::size_t at = 0, cut = std::string::npos;
         while (cut == std::string::npos && (at = tree.find('C', at)) != std::string::npos) {
@@ -138,29 +161,31 @@ TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a
         }
         REQUIRE(cut != std::string::npos);
         tree[cut + 2] = tree[cut + 2] == 'l' ? 'h' : 'l';
-        copy["proof"]["trees"][0] = tree;
-        CHECK(rejected_at(copy).rfind(tree_path(0), 0) == 0);
+        copy["proof"]["trees"][k] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
     }
     SECTION("a split at another coordinate than the producer's (the cuts below refer to its halves)") {
         Document copy = original;
-        std::string tree = copy["proof"]["trees"][0];
+        const std::size_t k = first_split_tree(copy);
+        std::string tree = copy["proof"]["trees"][k];
         const std::size_t split = tree.find('S');
         REQUIRE(split != std::string::npos);
         tree[split + 1] = static_cast<char>('0' + (tree[split + 1] - '0' + 1) % 6);
-        copy["proof"]["trees"][0] = tree;
-        CHECK(rejected_at(copy).rfind(tree_path(0), 0) == 0);
+        copy["proof"]["trees"][k] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
     }
     SECTION("a split with no coordinate, or coordinate 6, is malformed") {
         for (const char* replacement : {"S", "S6"}) {
             Document copy = original;
-            std::string tree = copy["proof"]["trees"][0];
+            const std::size_t k = first_split_tree(copy);
+            std::string tree = copy["proof"]["trees"][k];
             const std::size_t split = tree.find('S');
             REQUIRE(split != std::string::npos);
             tree.replace(split, 2, replacement);
-            copy["proof"]["trees"][0] = tree;
+            copy["proof"]["trees"][k] = tree;
             const auto report = verify_document(copy);
             CHECK(report.verdict == Verdict::malformed);
-            CHECK(report.path.rfind(tree_path(0), 0) == 0);
+            CHECK(report.path.rfind(tree_path(k), 0) == 0);
         }
     }
     SECTION("a start box removed with its tree: the claim is another one") {

@@ -141,6 +141,7 @@ private:
             case 'S': split(node, stack, digit("a split coordinate 0..5", '5')); return;
             case 'n': leaf_no_configuration(x); return;
             case 'r': leaf_relabelled(x); return;
+            case 'm': leaf_symmetric(x); return;
             case 'v': leaf_volume(x); return;
             case 'd': leaf_determinant(x); return;
             case 's':
@@ -153,7 +154,7 @@ private:
                 return;
             default:
                 --at_;
-                malformed("expected a leaf (S, E, n, r, v, d, s, c) or a round (C), found '" + std::string(1, terminal) + "'");
+                malformed("expected a leaf (S, E, n, r, v, d, m, s, c) or a round (C), found '" + std::string(1, terminal) + "'");
         }
     }
 
@@ -287,6 +288,21 @@ private:
         require(false, node_at_, "no orbit vector is certainly longer than b1 in the max norm: 'r' is not proved");
     }
 
+    // NOTES.md 12.2: the swap (b1, b2, b3) -> (b1, b3, b2) (both configurations) and, for A3,
+    // (b1, b2, b3) -> (b1, b1 - b2, b1 - b3) keep b1 and the configuration; the chart keeps
+    // a2 <= a3 where v2 and v3 share a face, and b1 . (b2 + b3 - b1) >= 0 for A3.
+    void leaf_symmetric(const ChartPoint& x) {
+        if (start_.face2 == start_.face3 && less(x[4], x[2])) return count(LeafReason::symmetric);
+        if (start_.configuration == Configuration::a3) {
+            const Matrix3 b = chart_values(box(x), setting_.chart).basis;
+            Real sum = b[0][0] * (b[1][0] + b[2][0] - b[0][0]);
+            for (int j = 1; j < 3; ++j) sum = sum + b[0][j] * (b[1][j] + b[2][j] - b[0][j]);
+            if (less(sum, Real(sum.precision()))) return count(LeafReason::symmetric);
+        }
+        require(false, node_at_,
+                "neither a2 > a3 on a shared face nor (A3) b1 . (b2 + b3 - b1) < 0 on the box: 'm' is not proved");
+    }
+
     void leaf_volume(const ChartPoint& x) {
         const ChartValues naive = chart_values(box(x), setting_.chart);
         if (less(abs(naive.determinant), setting_.volume_lo)) return count(LeafReason::volume);
@@ -357,6 +373,7 @@ const char* reason_name(LeafReason reason) {
         case LeafReason::short_vector: return "short_vector";
         case LeafReason::volume: return "volume";
         case LeafReason::closing_region: return "closing_region";
+        case LeafReason::symmetric: return "symmetric";
     }
     return "";
 }

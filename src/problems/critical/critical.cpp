@@ -21,6 +21,7 @@ const char* box_reason_name(BoxReason reason) {
         case BoxReason::short_vector: return "short_vector";
         case BoxReason::determinant: return "determinant";
         case BoxReason::closing_region: return "closing_region";
+        case BoxReason::symmetric: return "symmetric";
         case BoxReason::undecided_width: return "undecided_width";
         case BoxReason::undecided_budget: return "undecided_budget";
         case BoxReason::undecided_contract: return "undecided_contract";

@@ -21,6 +21,14 @@ std::vector<Coefficients> max_norm_orbit(MinkowskiCase configuration) {
     return {triples[1], triples[2]};
 }
 
+// b1 . (b2 + b3 - b1) = b1 . (b2 + b3) - |b1|^2, whose sign the relabelling
+// (b1, b2, b3) -> (b1, b1 - b2, b1 - b3) of A3 reverses (12.2): the chart keeps it >= 0.
+I sigma_form(const Basis<I>& b) {
+    I sum = b[0][0] * (b[1][0] + b[2][0] - b[0][0]);
+    for (int j = 1; j < 3; ++j) sum = sum + b[0][j] * (b[1][j] + b[2][j] - b[0][j]);
+    return sum;
+}
+
 // Some coordinate of v certainly larger in size than `bound` (an upper end).
 bool certainly_longer(const std::array<I, 3>& v, const I& bound) {
     for (const I& x : v)
@@ -95,6 +103,9 @@ std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x
         if (trace) *trace += letter;
         return reason;
     };
+    // The swap of b2 and b3 keeps b1 and both configurations (12.2): where v2 and v3 share a
+    // face, the chart keeps a2 <= a3.
+    if (box.face2 == box.face3 && certainly_less(box.x[4], box.x[2])) return leaf(BoxReason::symmetric, "m");
     // Naive enclosures over the box.
     basis = chart_basis(box.x, box.face2, box.face3, two_p);
     const std::array<I, 3> g = chart_equations(basis, box.configuration, two_p);
@@ -102,6 +113,8 @@ std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x
         if (!contains_zero(value)) return leaf(BoxReason::no_configuration, "n");
     for (const Coefficients& c : max_norm_orbit(box.configuration))
         if (certainly_longer(combination(basis, c), basis[0][0])) return leaf(BoxReason::relabelled, "r");
+    if (box.configuration == MinkowskiCase::a3 && certainly_less(sigma_form(basis), context.sigma_margin))
+        return leaf(BoxReason::symmetric, "m");
     if (certainly_less(abs(determinant(basis)), context.volume)) return leaf(BoxReason::volume, "v");
 
     const ChartForms forms = chart_forms(box, two_p);
@@ -172,6 +185,7 @@ BoxContext box_context(const Rational& p, const DInterval& volume, const DInterv
     context.min_width = min_width;
     context.margin_above = field.integer(1) + field.rational(Rational(1, 1L << 40));
     context.margin_below = field.integer(1) - field.rational(Rational(1, 1L << 40));
+    context.sigma_margin = -field.rational(Rational(1, 1L << 40));
     for (long a = -2; a <= 2; ++a)
         for (long b = -2; b <= 2; ++b)
             for (long c = -2; c <= 2; ++c) {

@@ -15,6 +15,7 @@ struct BoxContext {
     DInterval volume;     // V(K)
     DInterval threshold;  // T (a point)
     DInterval margin_above, margin_below;  // 1 + 2^-40 and 1 - 2^-40: the leaves' margins on T and V(K)
+    DInterval sigma_margin;                // -2^-40: a symmetric leaf needs b1 . (b2 + b3 - b1) below it
     std::vector<Coefficients> short_candidates;  // |c_i| <= 2, one per pair, not in a configuration
     const std::vector<ClosingRegion<DInterval>>* regions = nullptr;
     const std::vector<ChartImage>* images = nullptr;
