@@ -34,9 +34,19 @@ struct Token {
     char letter;
 };
 
+// A step: the form ('4' with three coefficient digits for a short vector), the coordinate, then
+// 'x' or a side and 16 hex digits.
+std::size_t step_length(const std::string& tree, std::size_t at) {
+    const std::size_t form = tree[at] == '4' ? 4 : 1;
+    return form + (tree[at + form + 1] == 'x' ? 2 : 18);
+}
+
+// Where a step's 'l', 'h' or 'x' is.
+std::size_t side_of(const std::string& tree, std::size_t step) { return step + (tree[step] == '4' ? 5 : 2); }
+
 void skip_round(const std::string& tree, std::size_t& at) {
     at += 4;  // 'C' and the three pivots
-    while (tree[at] != ';') at += (tree[at + 2] == 'x') ? 3 : 19;
+    while (tree[at] != ';') at += step_length(tree, at);
     ++at;
 }
 
@@ -155,12 +165,13 @@ TEST_CASE("critical-lattice tampering: a leaf's reason (symmetric too), a remove
         std::size_t at = 0, cut = std::string::npos;
         while (cut == std::string::npos && (at = tree.find('C', at)) != std::string::npos) {
             std::size_t step = at + 4;
-            while (tree[step] != ';' && tree[step + 2] == 'x') step += 3;
+            while (tree[step] != ';' && tree[side_of(tree, step)] == 'x') step += step_length(tree, step);
             if (tree[step] != ';') cut = step;
             at = step;
         }
         REQUIRE(cut != std::string::npos);
-        tree[cut + 2] = tree[cut + 2] == 'l' ? 'h' : 'l';
+        const std::size_t side = side_of(tree, cut);
+        tree[side] = tree[side] == 'l' ? 'h' : 'l';
         copy["proof"]["trees"][k] = tree;
         CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
     }
@@ -201,5 +212,51 @@ TEST_CASE("critical-lattice tampering: a leaf's reason (symmetric too), a remove
         threshold["hi"] = threshold["lo"];
         const std::string path = rejected_at(copy);
         CHECK(superpack::test::proof_step(path));
+    }
+}
+
+// critical at p = 3/5, gap 9e-5, on one start box of the domain split 8 times (box 13802, 415
+// boxes, 287 cuts of short vectors' h_c, form '4', 29 of them emptying a box).
+TEST_CASE("critical-lattice short-vector cuts at p = 3/5: they verify; a changed coefficient, c = 0, a cut moved, rejected") {
+    const Document original = superpack::test::critical_certificate_at(Rational(3, 5), [](superpack::CriticalOptions& options) {
+        options.gap = Rational(9, 100000);
+        options.split = 8;
+        options.shard = 13802;
+        options.shards = 43008;
+    });
+    const auto report = verify_document(original);
+    INFO(report.path << ": " << report.message);
+    REQUIRE(report.verdict == Verdict::valid);
+    const std::string tree = original["proof"]["trees"][0];
+    // The first short-vector cut: '4', three coefficient digits, a coordinate, 'l' or 'h'.
+    std::size_t cut = std::string::npos;
+    for (std::size_t at = 0; (at = tree.find('C', at)) != std::string::npos && cut == std::string::npos; ++at) {
+        std::size_t step = at + 4;
+        while (tree[step] != ';' && cut == std::string::npos) {
+            if (tree[step] == '4' && tree[side_of(tree, step)] != 'x') cut = step;
+            step += step_length(tree, step);
+        }
+    }
+    REQUIRE(cut != std::string::npos);
+    auto changed = [&](const std::function<void(std::string&)>& change) {
+        Document copy = original;
+        std::string t = tree;
+        change(t);
+        copy["proof"]["trees"][0] = t;
+        return copy;
+    };
+    SECTION("another short vector") {
+        CHECK(rejected_at(changed([&](std::string& t) { t[cut + 1] = t[cut + 1] == '4' ? '3' : static_cast<char>(t[cut + 1] + 1); }))
+                  .rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("c = 0, whose h_c < 0 everywhere") {
+        CHECK(rejected_at(changed([&](std::string& t) { t.replace(cut + 1, 3, "222"); })).rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("the cut moved to the other side") {
+        CHECK(rejected_at(changed([&](std::string& t) { t[side_of(t, cut)] = t[side_of(t, cut)] == 'l' ? 'h' : 'l'; }))
+                  .rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("a form 5 is malformed") {
+        CHECK(verify_document(changed([&](std::string& t) { t[cut] = '5'; })).verdict == Verdict::malformed);
     }
 }

@@ -43,6 +43,7 @@ struct Round {
     std::optional<std::array<int, 3>> pivots;
     std::optional<std::array<ChartForm, 3>> combined;
     std::optional<ChartForm> lagrange;
+    std::optional<std::pair<Triple, ChartForm>> short_vector;  // the last h_c a step asked for
 };
 
 class TreeReplay {
@@ -79,6 +80,7 @@ private:
     const std::string& path_;
     TreeCounts& counts_;
     std::size_t at_ = 0, node_at_ = 0;
+    ChartPoint round_box_ = chart_zeros(53);  // the box of the round being replayed (its forms' box)
 
     std::string where(std::size_t offset) const { return "at character " + std::to_string(offset) + ": "; }
     [[noreturn]] void malformed(const std::string& message) const { context_.malformed(path_, where(at_) + message); }
@@ -114,7 +116,8 @@ private:
         while (at_ < tree_.size() && tree_[at_] == 'C') {
             if (emptied_by >= 0) malformed("a round after a cut that left nothing of the box");
             ++at_;
-            Round round{chart_forms(box(x), setting_.chart), std::nullopt, std::nullopt, std::nullopt};
+            round_box_ = x;
+            Round round{chart_forms(box(x), setting_.chart), std::nullopt, std::nullopt, std::nullopt, std::nullopt};
             round_basis = round.forms.basis;
             read_pivots(round);
             ChartPoint cut = x;
@@ -133,7 +136,9 @@ private:
         const char terminal = next("a leaf or 'S'");
         if (terminal == 'E') {
             if (emptied_by < 0) reject("'E' with no cut that emptied the box");
-            ++counts_.leaves[static_cast<int>(emptied_by == 3 ? LeafReason::determinant : LeafReason::no_configuration)];
+            ++counts_.leaves[static_cast<int>(emptied_by == 3   ? LeafReason::determinant
+                                              : emptied_by == 4 ? LeafReason::short_vector
+                                                                : LeafReason::no_configuration)];
             return;
         }
         if (emptied_by >= 0) malformed("after a cut that emptied the box the leaf must be 'E'");
@@ -181,21 +186,32 @@ private:
         context_.reject(path_, where(offset) + message);
     }
 
-    // The enclosure of the form over the slab misses its target.
+    // The enclosure of the form over the slab misses its target: 0 for F_0..F_2, [V_lo, T] and
+    // [-T, -V_lo] for the Lagrangian, [0, inf) for a short vector's h_c (c B inside 2K).
     bool outside_target(int index, const Real& e) const {
         if (index < 3) return excludes_zero(e);
+        if (index == 4) return less(e, Real(e.precision()));
         return misses(e, setting_.volume_lo, setting_.threshold) && misses(e, -setting_.threshold, -setting_.volume_lo);
     }
 
     // One step; returns the form index when it is an 'x' (the whole box cut), else -1.
     int step(Round& round, ChartPoint& cut) {
         const std::size_t offset = at_;
-        const int index = digit("a form 0..3", '3');
+        const int index = digit("a form 0..4", '4');
+        Triple c{};
+        if (index == 4) {
+            for (long& coefficient : c) coefficient = digit("a coefficient digit 0..4 (-2..2)", '4') - 2;
+            if (c == Triple{0, 0, 0}) reject_at(offset, "a short-vector cut with coefficients all 0");
+        }
         const int k = digit("a coordinate 0..5", '5');
         const char side = next("'l', 'h' or 'x'");
         ++counts_.cuts;
-        const ChartForm& f = form(round, index, offset);
-        const std::string name = index == 3 ? std::string("the Lagrangian") : "F_" + std::to_string(index);
+        if (index == 4 && !(round.short_vector && round.short_vector->first == c))
+            round.short_vector.emplace(c, short_vector_form(box(round_box_), round.forms, c, setting_.chart));
+        const ChartForm& f = index == 4 ? round.short_vector->second : form(round, index, offset);
+        const std::string name = index == 3   ? std::string("the Lagrangian")
+                                 : index == 4 ? "h_c for c = " + triple_text(c)
+                                              : "F_" + std::to_string(index);
         if (side == 'x') {
             const Real e = enclose(f, cut, round.forms.center);
             require(outside_target(index, e), offset,

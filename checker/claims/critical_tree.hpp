@@ -4,15 +4,16 @@
 //
 //     node     := round* terminal
 //     round    := 'C' pivots step* ';'          pivots: three of '0'..'5', or "---"
-//     step     := form coord ('l' hex16 | 'h' hex16 | 'x')
+//     step     := form coord ('l' hex16 | 'h' hex16 | 'x')    form: '0'..'3', or '4' ddd
 //     terminal := 'S' coord node node | 'E' | 'n' | 'r' | 'v' | 'd' | 'm' | 's' ddd | 'c' digits '.'
 //
 // A round computes the forms over its box (chart_forms.hpp) and proves each cut slab free of
 // what a leaf would have to decide: the preconditioned F_0..F_2 ('0'..'2') exclude 0 on it, or
-// the Lagrangian ('3') misses [V_lo, T] and [-T, -V_lo]. 'x' cuts the whole box ('E' follows).
-// 'S' splits at the median of the coordinate that follows it ('0'..'5', the producer's choice:
-// any coordinate is sound, since both halves are replayed). The first-order leaves (n: some g_i has one
-// sign; r: an orbit vector is longer than b1 in the max norm; v: |det| < V_lo; d: |det| > T on
+// the Lagrangian ('3') misses [V_lo, T] and [-T, -V_lo], or a short vector's h_c ('4' and the
+// coefficients c_i + 2, c != 0: sum |(c B)_j / 2|^q - 1 by Hansen's form) is < 0 (c B in 2K).
+// 'x' cuts the whole box ('E' follows). 'S' splits at the median of the coordinate that follows
+// it ('0'..'5', the producer's choice: any coordinate is sound, since both halves are replayed).
+// The first-order leaves (n: some g_i has one sign; r: an orbit vector is longer than b1 in the max norm; v: |det| < V_lo; d: |det| > T on
 // the configuration, by the Lagrangian; m: outside the fundamental domain of the relabellings
 // that keep b1, a2 > a3 where v2 and v3 share a face or, for A3, b1 . (b2 + b3 - b1) < 0) are
 // proved on the box after the rounds; the lattice

@@ -141,6 +141,39 @@ std::array<Real, 3> combination(const Matrix3& b, const Triple& c) { return comb
 
 Real half_norm_power(const std::array<Real, 3>& v, const ChartSetting& setting) { return half_norm_power_of(v, setting); }
 
+// Pass k of Hansen's form: the basis with its x_k-slopes over the box whose coordinates after k
+// are at the centre. Row r = k/2 is the only one that moves with x_k; the rows before it are the
+// naive rows over the box, the rows after it the centre's, both constants.
+namespace {
+Rows<Gradient> hansen_rows(const ChartBox& box, const ChartForms& forms, int k, const ChartSetting& setting) {
+    const int r = k / 2;
+    auto constant_row = [&](int row) {
+        const Matrix3& from = row < r ? forms.naive.basis : forms.center_basis;
+        return std::array<Gradient, 3>{constant(from[row][0]), constant(from[row][1]), constant(from[row][2])};
+    };
+    Rows<Gradient> rows{constant_row(0), constant_row(1), constant_row(2)};
+    const Gradient first = k % 2 == 0 ? variable(box.x[k], k) : constant(box.x[k - 1]);
+    const Gradient second = k % 2 == 0 ? constant(forms.center[k + 1]) : variable(box.x[k], k);
+    if (r == 0) {
+        const Gradient one = constant(integer(1, box.x[0].precision()));
+        rows[0] = boundary_point(std::array<Gradient, 3>{one, first, first * second}, setting);
+    } else {
+        rows[r] = boundary_point(face_point(r == 1 ? box.face2 : box.face3, first, second), setting);
+    }
+    return rows;
+}
+}  // namespace
+
+ChartForm short_vector_form(const ChartBox& box, const ChartForms& forms, const Triple& c, const ChartSetting& setting) {
+    const mpfr_prec_t precision = box.x[0].precision();
+    ChartForm h{half_norm_power_of(combination_of(forms.center_basis, c), setting) - integer(1, precision),
+                chart_zeros(precision)};
+    for (int k = 0; k < chart_dimension; ++k)
+        if (c[static_cast<std::size_t>(k / 2)] != 0)
+            h.slope[k] = slope_at(half_norm_power_of(combination_of(hansen_rows(box, forms, k, setting), c), setting), k);
+    return h;
+}
+
 ChartForms chart_forms(const ChartBox& box, const ChartSetting& setting) {
     const mpfr_prec_t precision = box.x[0].precision();
     ChartBox center_box = box;
@@ -153,6 +186,7 @@ ChartForms chart_forms(const ChartBox& box, const ChartSetting& setting) {
                       ChartForm{at_center.equations[2], zeros}},
                      ChartForm{at_center.determinant, zeros},
                      naive,
+                     at_center.basis,
                      at_center.basis};
     // Hansen's mean-value form, the producer's six Jet passes: slope k over the box with x_l at
     // the centre for l > k (f(x) - f(m) telescopes over the points (x_1..x_k, m_(k+1)..m_6), which
@@ -162,19 +196,7 @@ ChartForms chart_forms(const ChartBox& box, const ChartSetting& setting) {
     const std::array<Triple, 6> triples = configuration_triples(box.configuration);
     for (int k = 0; k < chart_dimension; ++k) {
         const int r = k / 2;
-        auto constant_row = [&](int row) {
-            const Matrix3& from = row < r ? naive.basis : at_center.basis;
-            return std::array<Gradient, 3>{constant(from[row][0]), constant(from[row][1]), constant(from[row][2])};
-        };
-        Rows<Gradient> rows{constant_row(0), constant_row(1), constant_row(2)};
-        const Gradient first = k % 2 == 0 ? variable(box.x[k], k) : constant(box.x[k - 1]);
-        const Gradient second = k % 2 == 0 ? constant(center_box.x[k + 1]) : variable(box.x[k], k);
-        if (r == 0) {
-            const Gradient one = constant(integer(1, precision));
-            rows[0] = boundary_point(std::array<Gradient, 3>{one, first, first * second}, setting);
-        } else {
-            rows[r] = boundary_point(face_point(r == 1 ? box.face2 : box.face3, first, second), setting);
-        }
+        const Rows<Gradient> rows = hansen_rows(box, forms, k, setting);
         for (int i = 0; i < 3; ++i)
             if (triples[3 + i][r] != 0)
                 forms.equations[i].slope[k] = slope_at(half_norm_power_of(combination_of(rows, triples[3 + i]), setting), k);

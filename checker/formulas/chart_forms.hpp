@@ -72,8 +72,12 @@ struct ChartForms {
     ChartForm determinant;
     ChartValues naive;                    // the plain enclosures over the box
     Matrix3 basis;                        // the naive basis intersected with its mean-value form
+    Matrix3 center_basis;                 // the basis at the centre
 };
 ChartForms chart_forms(const ChartBox& box, const ChartSetting& setting);
+// The form of h_c = sum_j |(c B)_j / 2|^q - 1 over the forms' box (Hansen's slopes, as the
+// producer's): where h_c < 0 the lattice vector c B (c != 0) lies inside 2K.
+ChartForm short_vector_form(const ChartBox& box, const ChartForms& forms, const Triple& c, const ChartSetting& setting);
 
 // f(m) + sum_k slope_k (x_k - m_k), summed in the order of k, for a box x inside the forms' box.
 Real enclose(const ChartForm& form, const ChartPoint& x, const ChartPoint& center);

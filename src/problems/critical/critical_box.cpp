@@ -29,6 +29,24 @@ I sigma_form(const Basis<I>& b) {
     return sum;
 }
 
+// The short-vector candidate (not a configuration vector) whose sum |(c B)_j / 2|^(2p) has the
+// least upper end over the box, when that end is below 4 (a cut of h_c >= 0 is then worth trying).
+std::optional<Coefficients> likeliest_short(const ChartBox<I>& box, const Basis<I>& basis, const BoxContext& context) {
+    const std::array<Coefficients, 6> triples = configuration_triples(box.configuration);
+    double least = 4;
+    std::optional<Coefficients> chosen;
+    for (const Coefficients& c : context.short_candidates) {
+        if (std::any_of(triples.begin(), triples.end(), [&](const Coefficients& t) { return representative(t) == c; }))
+            continue;
+        const double upper = half_norm_power(combination(basis, c), context.two_p).upper();
+        if (upper < least) {
+            least = upper;
+            chosen = c;
+        }
+    }
+    return chosen;
+}
+
 // Some coordinate of v certainly larger in size than `bound` (an upper end).
 bool certainly_longer(const std::array<I, 3>& v, const I& bound) {
     for (const I& x : v)
@@ -137,8 +155,15 @@ std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x
     if (trace) *trace += 'C';
     if (!contract_to_configuration(forms, x, trace)) return leaf(BoxReason::no_configuration, ";E");
     const I low = lower_point(context.volume), high = context.threshold;
-    if (!contract_linear(lagrange, {hull(low, high), hull(-high, -low)}, x, forms.center, '3', trace))
+    if (!contract_linear(lagrange, {hull(low, high), hull(-high, -low)}, x, forms.center, "3", trace))
         return leaf(BoxReason::determinant, ";E");
+    // The short-vector cut: the lattice vector c B likeliest to be short (the least upper end of
+    // sum |(c B)_j / 2|^(2p) over the box, c not a configuration vector) is not, on what is kept.
+    if (const std::optional<Coefficients> c = likeliest_short(box, basis, context)) {
+        const std::string name{'4', static_cast<char>('2' + (*c)[0]), static_cast<char>('2' + (*c)[1]), static_cast<char>('2' + (*c)[2])};
+        if (!contract_linear(short_vector_form(forms, *c, two_p), {context.admissible}, x, forms.center, name, trace))
+            return leaf(BoxReason::short_vector, ";E");
+    }
     if (trace) *trace += ';';
     // Where |det| < T at the centre only a short vector (or the volume) can decide the box, and
     // the Lagrangian's slopes say nothing about that test: there the widest coordinate is split.
@@ -186,6 +211,7 @@ BoxContext box_context(const Rational& p, const DInterval& volume, const DInterv
     context.margin_above = field.integer(1) + field.rational(Rational(1, 1L << 40));
     context.margin_below = field.integer(1) - field.rational(Rational(1, 1L << 40));
     context.sigma_margin = -field.rational(Rational(1, 1L << 40));
+    context.admissible = hull(field.integer(0), DInterval(1e300));
     for (long a = -2; a <= 2; ++a)
         for (long b = -2; b <= 2; ++b)
             for (long c = -2; c <= 2; ++c) {

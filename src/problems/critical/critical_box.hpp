@@ -16,6 +16,7 @@ struct BoxContext {
     DInterval threshold;  // T (a point)
     DInterval margin_above, margin_below;  // 1 + 2^-40 and 1 - 2^-40: the leaves' margins on T and V(K)
     DInterval sigma_margin;                // -2^-40: a symmetric leaf needs b1 . (b2 + b3 - b1) below it
+    DInterval admissible;                  // [0, 1e300]: the values of h_c kept by the short-vector cut
     std::vector<Coefficients> short_candidates;  // |c_i| <= 2, one per pair, not in a configuration
     const std::vector<ClosingRegion<DInterval>>* regions = nullptr;
     const std::vector<ChartImage>* images = nullptr;
