@@ -9,16 +9,21 @@
 
 namespace superpack::test {
 
-// `place` sets where the run starts (--around, --split and --shard); the run must be proved.
-inline nlohmann::json critical_certificate_at_p2(const std::function<void(CriticalOptions&)>& place) {
-    const CriticalReference<DInterval> reference = critical_reference(Rational(2), DoubleField{});
+// `place` sets where the run starts (--around, --split and --shard) and the gap; the run must be
+// proved.
+inline nlohmann::json critical_certificate_at(const Rational& p, const std::function<void(CriticalOptions&)>& place) {
+    const CriticalReference<DInterval> reference = critical_reference(p, DoubleField{});
     CriticalOptions options;
-    options.p = Rational(2);
+    options.p = p;
     options.record_trees = true;
     place(options);
     const CriticalResult<DInterval> result = critical_bound(reference, options);
     REQUIRE(result.status == Outcome::proved);
     return nlohmann::json::parse(critical_certificate(result, options).dump());
+}
+
+inline nlohmann::json critical_certificate_at_p2(const std::function<void(CriticalOptions&)>& place) {
+    return critical_certificate_at(Rational(2), place);
 }
 
 }  // namespace superpack::test

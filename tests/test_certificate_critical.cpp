@@ -1,7 +1,8 @@
 // Certificates of claim kind "critical-lattice" (superpack critical --certificate FILE, NOTES.md
 // 12.8): the boxes around C1's images at p = 2 and gap 0 certify, and the checker rejects, each at
-// a named tree, a changed leaf reason, a removed leaf, a cut moved to the other side, a closing
-// region leaf pointed at another image, a removed start box and a raised T.
+// a named tree, a changed leaf reason (a symmetric leaf among them), a removed leaf, a cut moved to
+// the other side, a split at another coordinate (and one without a coordinate, malformed), a
+// closing region leaf pointed at another image, a removed start box and a raised T.
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,10 +20,11 @@ using superpack_checker::verify_document;
 using superpack::test::rejected_at;
 using Document = nlohmann::json;
 
-// critical at p = 2, gap 0, on the boxes of half-width 1e-5 around C1's images, with its trees.
+// critical at p = 2, gap 0, on the boxes of half-width 3e-5 around C1's images, with its trees
+// (at 1e-5 two boxes are symmetric leaves and the two others close at once).
 const Document& certificate_around_c1() {
     static const Document document =
-        superpack::test::critical_certificate_at_p2([](superpack::CriticalOptions& options) { options.around = 1e-5; });
+        superpack::test::critical_certificate_at_p2([](superpack::CriticalOptions& options) { options.around = 3e-5; });
     return document;
 }
 
@@ -32,9 +34,19 @@ struct Token {
     char letter;
 };
 
+// A step: the form ('4' with three coefficient digits for a short vector), the coordinate, then
+// 'x' or a side and 16 hex digits.
+std::size_t step_length(const std::string& tree, std::size_t at) {
+    const std::size_t form = tree[at] == '4' ? 4 : 1;
+    return form + (tree[at + form + 1] == 'x' ? 2 : 18);
+}
+
+// Where a step's 'l', 'h' or 'x' is.
+std::size_t side_of(const std::string& tree, std::size_t step) { return step + (tree[step] == '4' ? 5 : 2); }
+
 void skip_round(const std::string& tree, std::size_t& at) {
     at += 4;  // 'C' and the three pivots
-    while (tree[at] != ';') at += (tree[at + 2] == 'x') ? 3 : 19;
+    while (tree[at] != ';') at += step_length(tree, at);
     ++at;
 }
 
@@ -42,7 +54,7 @@ void collect_leaves(const std::string& tree, std::size_t& at, std::vector<Token>
     while (tree[at] == 'C') skip_round(tree, at);
     const char letter = tree[at];
     if (letter == 'S') {
-        ++at;
+        at += 2;  // 'S' and the split coordinate
         collect_leaves(tree, at, leaves);
         collect_leaves(tree, at, leaves);
         return;
@@ -74,6 +86,15 @@ std::pair<std::size_t, Token> first_leaf(const Document& document, char letter) 
 
 std::string tree_path(std::size_t k) { return "proof.trees[" + std::to_string(k) + "]"; }
 
+// The first tree with a split (the trees of start boxes outside the fundamental domain are one 'm').
+std::size_t first_split_tree(const Document& document) {
+    const Document& trees = document["proof"]["trees"];
+    for (std::size_t k = 0; k < trees.size(); ++k)
+        if (trees[k].get<std::string>().find('S') != std::string::npos) return k;
+    FAIL("no tree with a split");
+    return 0;
+}
+
 // The first leaf of `letter` replaced by change(leaf) must be rejected at its tree.
 void check_leaf_change_rejected(const Document& original, char letter,
                                 const std::function<std::string(const std::string&)>& change) {
@@ -87,7 +108,7 @@ void check_leaf_change_rejected(const Document& original, char letter,
 
 }  // namespace
 
-TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it verifies, with both leaf kinds near C1") {
+TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it verifies, with the leaf kinds near C1") {
     const Document& document = certificate_around_c1();
     const auto report = verify_document(document);
     INFO(report.path << ": " << report.message);
@@ -97,9 +118,10 @@ TEST_CASE("critical-lattice certificate at p = 2 around C1's images (gap 0): it 
     CHECK(document["proof"]["regions"][0]["images"].size() == 4);
     first_leaf(document, 'c');
     first_leaf(document, 'd');
+    first_leaf(document, 'm');
 }
 
-TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, an image, a start box, T") {
+TEST_CASE("critical-lattice tampering: a leaf's reason (symmetric too), a removed leaf, a cut, a split, an image, a start box, T") {
     const Document& original = certificate_around_c1();
 
     SECTION("a determinant leaf said to have no configuration point") {
@@ -107,6 +129,15 @@ TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a
     }
     SECTION("a closing-region leaf said to be a determinant leaf") {
         check_leaf_change_rejected(original, 'c', [](const std::string&) { return std::string("d"); });
+    }
+    SECTION("a symmetric leaf said to be a determinant leaf") {
+        check_leaf_change_rejected(original, 'm', [](const std::string&) { return std::string("d"); });
+    }
+    SECTION("a determinant leaf said to be symmetric (it lies in the fundamental domain)") {
+        check_leaf_change_rejected(original, 'd', [](const std::string&) { return std::string("m"); });
+    }
+    SECTION("a closing-region leaf said to be symmetric") {
+        check_leaf_change_rejected(original, 'c', [](const std::string&) { return std::string("m"); });
     }
     SECTION("a closing-region leaf pointed at another image") {
         check_leaf_change_rejected(original, 'c', [](const std::string& leaf) {
@@ -116,30 +147,57 @@ TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a
     }
     SECTION("the last leaf of a tree removed (a box left uncovered)") {
         Document copy = original;
-        std::string tree = copy["proof"]["trees"][0];
+        const std::size_t k = first_split_tree(copy);
+        std::string tree = copy["proof"]["trees"][k];
         const std::vector<Token> leaves = leaves_of(tree);
         REQUIRE(leaves.size() > 1);
         tree.erase(leaves.back().offset, leaves.back().length);
-        copy["proof"]["trees"][0] = tree;
+        copy["proof"]["trees"][k] = tree;
         const auto report = verify_document(copy);
         CHECK(report.verdict != Verdict::valid);
-        CHECK(report.path.rfind(tree_path(0), 0) == 0);
+        CHECK(report.path.rfind(tree_path(k), 0) == 0);
     }
     SECTION("a cut moved to the other side of the coordinate") {
         Document copy = original;
-        std::string tree = copy["proof"]["trees"][0];
+        const std::size_t k = first_split_tree(copy);
+        std::string tree = copy["proof"]["trees"][k];
         // The first cut: a step with side 'l' or 'h' in some round (a round may have none).
         std::size_t at = 0, cut = std::string::npos;
         while (cut == std::string::npos && (at = tree.find('C', at)) != std::string::npos) {
             std::size_t step = at + 4;
-            while (tree[step] != ';' && tree[step + 2] == 'x') step += 3;
+            while (tree[step] != ';' && tree[side_of(tree, step)] == 'x') step += step_length(tree, step);
             if (tree[step] != ';') cut = step;
             at = step;
         }
         REQUIRE(cut != std::string::npos);
-        tree[cut + 2] = tree[cut + 2] == 'l' ? 'h' : 'l';
-        copy["proof"]["trees"][0] = tree;
-        CHECK(rejected_at(copy).rfind(tree_path(0), 0) == 0);
+        const std::size_t side = side_of(tree, cut);
+        tree[side] = tree[side] == 'l' ? 'h' : 'l';
+        copy["proof"]["trees"][k] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+    }
+    SECTION("a split at another coordinate than the producer's (the cuts below refer to its halves)") {
+        Document copy = original;
+        const std::size_t k = first_split_tree(copy);
+        std::string tree = copy["proof"]["trees"][k];
+        const std::size_t split = tree.find('S');
+        REQUIRE(split != std::string::npos);
+        tree[split + 1] = static_cast<char>('0' + (tree[split + 1] - '0' + 1) % 6);
+        copy["proof"]["trees"][k] = tree;
+        CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+    }
+    SECTION("a split with no coordinate, or coordinate 6, is malformed") {
+        for (const char* replacement : {"S", "S6"}) {
+            Document copy = original;
+            const std::size_t k = first_split_tree(copy);
+            std::string tree = copy["proof"]["trees"][k];
+            const std::size_t split = tree.find('S');
+            REQUIRE(split != std::string::npos);
+            tree.replace(split, 2, replacement);
+            copy["proof"]["trees"][k] = tree;
+            const auto report = verify_document(copy);
+            CHECK(report.verdict == Verdict::malformed);
+            CHECK(report.path.rfind(tree_path(k), 0) == 0);
+        }
     }
     SECTION("a start box removed with its tree: the claim is another one") {
         Document copy = original;
@@ -154,5 +212,51 @@ TEST_CASE("critical-lattice tampering: a leaf's reason, a removed leaf, a cut, a
         threshold["hi"] = threshold["lo"];
         const std::string path = rejected_at(copy);
         CHECK(superpack::test::proof_step(path));
+    }
+}
+
+// critical at p = 3/5, gap 9e-5, on one start box of the domain split 8 times (box 13802, 415
+// boxes, 287 cuts of short vectors' h_c, form '4', 29 of them emptying a box).
+TEST_CASE("critical-lattice short-vector cuts at p = 3/5: they verify; a changed coefficient, c = 0, a cut moved, rejected") {
+    const Document original = superpack::test::critical_certificate_at(Rational(3, 5), [](superpack::CriticalOptions& options) {
+        options.gap = Rational(9, 100000);
+        options.split = 8;
+        options.shard = 13802;
+        options.shards = 43008;
+    });
+    const auto report = verify_document(original);
+    INFO(report.path << ": " << report.message);
+    REQUIRE(report.verdict == Verdict::valid);
+    const std::string tree = original["proof"]["trees"][0];
+    // The first short-vector cut: '4', three coefficient digits, a coordinate, 'l' or 'h'.
+    std::size_t cut = std::string::npos;
+    for (std::size_t at = 0; (at = tree.find('C', at)) != std::string::npos && cut == std::string::npos; ++at) {
+        std::size_t step = at + 4;
+        while (tree[step] != ';' && cut == std::string::npos) {
+            if (tree[step] == '4' && tree[side_of(tree, step)] != 'x') cut = step;
+            step += step_length(tree, step);
+        }
+    }
+    REQUIRE(cut != std::string::npos);
+    auto changed = [&](const std::function<void(std::string&)>& change) {
+        Document copy = original;
+        std::string t = tree;
+        change(t);
+        copy["proof"]["trees"][0] = t;
+        return copy;
+    };
+    SECTION("another short vector") {
+        CHECK(rejected_at(changed([&](std::string& t) { t[cut + 1] = t[cut + 1] == '4' ? '3' : static_cast<char>(t[cut + 1] + 1); }))
+                  .rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("c = 0, whose h_c < 0 everywhere") {
+        CHECK(rejected_at(changed([&](std::string& t) { t.replace(cut + 1, 3, "222"); })).rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("the cut moved to the other side") {
+        CHECK(rejected_at(changed([&](std::string& t) { t[side_of(t, cut)] = t[side_of(t, cut)] == 'l' ? 'h' : 'l'; }))
+                  .rfind(tree_path(0), 0) == 0);
+    }
+    SECTION("a form 5 is malformed") {
+        CHECK(verify_document(changed([&](std::string& t) { t[cut] = '5'; })).verdict == Verdict::malformed);
     }
 }

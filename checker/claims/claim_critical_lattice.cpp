@@ -76,7 +76,8 @@ std::string critical_lattice_sentence(const mpq_class& p, bool whole, std::size_
                     " of proof.boxes (the chart of NOTES.md 12.2)";
     const std::string which = whole ? "whose chart basis satisfies its configuration"
                                     : "whose chart basis lies in one of these boxes and satisfies the box's configuration, "
-                                      "with b1 longest in the max norm among its orbit (NOTES.md 12.2),";
+                                      "with b1 longest in the max norm among its orbit, a2 <= a3 where v2 and v3 share a face "
+                                      "and, for A3, b1 . (b2 + b3) >= |b1|^2 (NOTES.md 12.2),";
     const std::string consequence =
         whole ? std::string(whole_domain_consequence)
               : "so the density of each such packing is at most ";

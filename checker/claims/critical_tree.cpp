@@ -41,6 +41,7 @@ struct Round {
     std::optional<std::array<int, 3>> pivots;
     std::optional<std::array<ChartForm, 3>> combined;
     std::optional<ChartForm> lagrange;
+    std::optional<std::pair<Triple, ChartForm>> short_vector;  // the last h_c a step asked for
 };
 
 class TreeReplay {
@@ -77,6 +78,7 @@ private:
     const std::string& path_;
     TreeCounts& counts_;
     std::size_t at_ = 0, node_at_ = 0;
+    ChartPoint round_box_ = chart_zeros(53);  // the box of the round being replayed (its forms' box)
 
     std::string where(std::size_t offset) const { return "at character " + std::to_string(offset) + ": "; }
     [[noreturn]] void malformed(const std::string& message) const { context_.malformed(path_, where(at_) + message); }
@@ -112,7 +114,8 @@ private:
         while (at_ < tree_.size() && tree_[at_] == 'C') {
             if (emptied_by >= 0) malformed("a round after a cut that left nothing of the box");
             ++at_;
-            Round round{chart_forms(box(x), setting_.chart), std::nullopt, std::nullopt, std::nullopt};
+            round_box_ = x;
+            Round round{chart_forms(box(x), setting_.chart), std::nullopt, std::nullopt, std::nullopt, std::nullopt};
             round_basis = round.forms.basis;
             read_pivots(round);
             ChartPoint cut = x;
@@ -131,14 +134,17 @@ private:
         const char terminal = next("a leaf or 'S'");
         if (terminal == 'E') {
             if (emptied_by < 0) reject("'E' with no cut that emptied the box");
-            ++counts_.leaves[static_cast<int>(emptied_by == 3 ? LeafReason::determinant : LeafReason::no_configuration)];
+            ++counts_.leaves[static_cast<int>(emptied_by == 3   ? LeafReason::determinant
+                                              : emptied_by == 4 ? LeafReason::short_vector
+                                                                : LeafReason::no_configuration)];
             return;
         }
         if (emptied_by >= 0) malformed("after a cut that emptied the box the leaf must be 'E'");
         switch (terminal) {
-            case 'S': split(node, stack); return;
+            case 'S': split(node, stack, digit("a split coordinate 0..5", '5')); return;
             case 'n': leaf_no_configuration(x); return;
             case 'r': leaf_relabelled(x); return;
+            case 'm': leaf_symmetric(x); return;
             case 'v': leaf_volume(x); return;
             case 'd': leaf_determinant(x); return;
             case 's':
@@ -151,7 +157,7 @@ private:
                 return;
             default:
                 --at_;
-                malformed("expected a leaf (S, E, n, r, v, d, s, c) or a round (C), found '" + std::string(1, terminal) + "'");
+                malformed("expected a leaf (S, E, n, r, v, d, m, s, c) or a round (C), found '" + std::string(1, terminal) + "'");
         }
     }
 
@@ -178,21 +184,32 @@ private:
         context_.reject(path_, where(offset) + message);
     }
 
-    // The enclosure of the form over the slab misses its target.
+    // The enclosure of the form over the slab misses its target: 0 for F_0..F_2, [V_lo, T] and
+    // [-T, -V_lo] for the Lagrangian, [0, inf) for a short vector's h_c (c B inside 2K).
     bool outside_target(int index, const Real& e) const {
         if (index < 3) return excludes_zero(e);
+        if (index == 4) return less(e, Real(e.precision()));
         return misses(e, setting_.volume_lo, setting_.threshold) && misses(e, -setting_.threshold, -setting_.volume_lo);
     }
 
     // One step; returns the form index when it is an 'x' (the whole box cut), else -1.
     int step(Round& round, ChartPoint& cut) {
         const std::size_t offset = at_;
-        const int index = digit("a form 0..3", '3');
+        const int index = digit("a form 0..4", '4');
+        Triple c{};
+        if (index == 4) {
+            for (long& coefficient : c) coefficient = digit("a coefficient digit 0..4 (-2..2)", '4') - 2;
+            if (c == Triple{0, 0, 0}) reject_at(offset, "a short-vector cut with coefficients all 0");
+        }
         const int k = digit("a coordinate 0..5", '5');
         const char side = next("'l', 'h' or 'x'");
         ++counts_.cuts;
-        const ChartForm& f = form(round, index, offset);
-        const std::string name = index == 3 ? std::string("the Lagrangian") : "F_" + std::to_string(index);
+        if (index == 4 && !(round.short_vector && round.short_vector->first == c))
+            round.short_vector.emplace(c, short_vector_form(box(round_box_), round.forms, c, setting_.chart));
+        const ChartForm& f = index == 4 ? round.short_vector->second : form(round, index, offset);
+        const std::string name = index == 3   ? std::string("the Lagrangian")
+                                 : index == 4 ? "h_c for c = " + triple_text(c)
+                                              : "F_" + std::to_string(index);
         if (side == 'x') {
             const Real e = enclose(f, cut, round.forms.center);
             require(outside_target(index, e), offset,
@@ -252,15 +269,15 @@ private:
         return end;
     }
 
-    void split(Pending& node, std::vector<Pending>& stack) {
+    // Any coordinate is sound: the two halves cover the box, and each is replayed.
+    void split(Pending& node, std::vector<Pending>& stack, int k) {
         if (node.depth + 1 > max_tree_depth)
             malformed("splits nested deeper than " + std::to_string(max_tree_depth) + " (max_tree_depth)");
-        const int widest = widest_coordinate(node.x);
-        const Real middle = median(node.x[widest]);
+        const Real middle = median(node.x[k]);
         if (!binary64_box_end(middle.lo())) reject("the median of a split is nonzero and below 2^-1000 in size");
         Pending lower{node.x, node.depth + 1}, upper{node.x, node.depth + 1};
-        lower.x[widest] = with_end(node.x[widest], middle.lo(), false);
-        upper.x[widest] = with_end(node.x[widest], middle.lo(), true);
+        lower.x[k] = with_end(node.x[k], middle.lo(), false);
+        upper.x[k] = with_end(node.x[k], middle.lo(), true);
         stack.push_back(std::move(upper));  // the lower half's node comes first in pre-order
         stack.push_back(std::move(lower));
     }
@@ -283,6 +300,21 @@ private:
             for (const Real& coordinate : combination(basis, c))
                 if (less(upper_point(basis[0][0]), abs(coordinate))) return count(LeafReason::relabelled);
         require(false, node_at_, "no orbit vector is certainly longer than b1 in the max norm: 'r' is not proved");
+    }
+
+    // NOTES.md 12.2: the swap (b1, b2, b3) -> (b1, b3, b2) (both configurations) and, for A3,
+    // (b1, b2, b3) -> (b1, b1 - b2, b1 - b3) keep b1 and the configuration; the chart keeps
+    // a2 <= a3 where v2 and v3 share a face, and b1 . (b2 + b3 - b1) >= 0 for A3.
+    void leaf_symmetric(const ChartPoint& x) {
+        if (start_.face2 == start_.face3 && less(x[4], x[2])) return count(LeafReason::symmetric);
+        if (start_.configuration == Configuration::a3) {
+            const Matrix3 b = chart_values(box(x), setting_.chart).basis;
+            Real sum = b[0][0] * (b[1][0] + b[2][0] - b[0][0]);
+            for (int j = 1; j < 3; ++j) sum = sum + b[0][j] * (b[1][j] + b[2][j] - b[0][j]);
+            if (less(sum, Real(sum.precision()))) return count(LeafReason::symmetric);
+        }
+        require(false, node_at_,
+                "neither a2 > a3 on a shared face nor (A3) b1 . (b2 + b3 - b1) < 0 on the box: 'm' is not proved");
     }
 
     void leaf_volume(const ChartPoint& x) {
@@ -355,6 +387,7 @@ const char* reason_name(LeafReason reason) {
         case LeafReason::short_vector: return "short_vector";
         case LeafReason::volume: return "volume";
         case LeafReason::closing_region: return "closing_region";
+        case LeafReason::symmetric: return "symmetric";
     }
     return "";
 }

@@ -99,10 +99,6 @@ Vector3d solve3(const Matrix3d& m, const Vector3d& r) {
     return y;
 }
 
-ChartPoint slopes(const Gradient& g) {
-    return {slope_at(g, 0), slope_at(g, 1), slope_at(g, 2), slope_at(g, 3), slope_at(g, 4), slope_at(g, 5)};
-}
-
 Real point(double x, mpfr_prec_t precision) {
     return doubles(x, x, precision);  // exact: precision >= 53
 }
@@ -143,40 +139,72 @@ std::array<Real, 3> combination(const Matrix3& b, const Triple& c) { return comb
 
 Real half_norm_power(const std::array<Real, 3>& v, const ChartSetting& setting) { return half_norm_power_of(v, setting); }
 
+// Pass k of Hansen's form: the basis with its x_k-slopes over the box whose coordinates after k
+// are at the centre. Row r = k/2 is the only one that moves with x_k; the rows before it are the
+// naive rows over the box, the rows after it the centre's, both constants.
+namespace {
+Rows<Gradient> hansen_rows(const ChartBox& box, const ChartForms& forms, int k, const ChartSetting& setting) {
+    const int r = k / 2;
+    auto constant_row = [&](int row) {
+        const Matrix3& from = row < r ? forms.naive.basis : forms.center_basis;
+        return std::array<Gradient, 3>{constant(from[row][0]), constant(from[row][1]), constant(from[row][2])};
+    };
+    Rows<Gradient> rows{constant_row(0), constant_row(1), constant_row(2)};
+    const Gradient first = k % 2 == 0 ? variable(box.x[k], k) : constant(box.x[k - 1]);
+    const Gradient second = k % 2 == 0 ? constant(forms.center[k + 1]) : variable(box.x[k], k);
+    if (r == 0) {
+        const Gradient one = constant(integer(1, box.x[0].precision()));
+        rows[0] = boundary_point(std::array<Gradient, 3>{one, first, first * second}, setting);
+    } else {
+        rows[r] = boundary_point(face_point(r == 1 ? box.face2 : box.face3, first, second), setting);
+    }
+    return rows;
+}
+}  // namespace
+
+ChartForm short_vector_form(const ChartBox& box, const ChartForms& forms, const Triple& c, const ChartSetting& setting) {
+    const mpfr_prec_t precision = box.x[0].precision();
+    ChartForm h{half_norm_power_of(combination_of(forms.center_basis, c), setting) - integer(1, precision),
+                chart_zeros(precision)};
+    for (int k = 0; k < chart_dimension; ++k)
+        if (c[static_cast<std::size_t>(k / 2)] != 0)
+            h.slope[k] = slope_at(half_norm_power_of(combination_of(hansen_rows(box, forms, k, setting), c), setting), k);
+    return h;
+}
+
 ChartForms chart_forms(const ChartBox& box, const ChartSetting& setting) {
     const mpfr_prec_t precision = box.x[0].precision();
     ChartBox center_box = box;
-    std::array<Gradient, chart_dimension> seeded{constant(box.x[0]), constant(box.x[0]), constant(box.x[0]),
-                                                 constant(box.x[0]), constant(box.x[0]), constant(box.x[0])};
-    for (int k = 0; k < chart_dimension; ++k) {
-        center_box.x[k] = median(box.x[k]);
-        seeded[k] = variable(box.x[k], k);
-    }
-    // The values at the centre (point boxes), then one pass of gradients over the box: the
-    // producer's six Jet passes, whose values are the naive enclosures over the box.
+    for (int k = 0; k < chart_dimension; ++k) center_box.x[k] = median(box.x[k]);
     const ChartValues at_center = chart_values(center_box, setting);
-    const Rows<Gradient> jets = chart_basis(seeded, box.face2, box.face3, setting);
-    const std::array<Gradient, 3> g = chart_equations(jets, box.configuration, setting);
-    const Gradient det = determinant_of(jets);
-
+    const ChartValues naive = chart_values(box, setting);
     const ChartPoint zeros = chart_zeros(precision);
     ChartForms forms{center_box.x,
                      {ChartForm{at_center.equations[0], zeros}, ChartForm{at_center.equations[1], zeros},
                       ChartForm{at_center.equations[2], zeros}},
-                     ChartForm{at_center.determinant, slopes(det)},
-                     ChartValues{at_center.basis, {g[0].value, g[1].value, g[2].value}, det.value},
+                     ChartForm{at_center.determinant, zeros},
+                     naive,
+                     at_center.basis,
                      at_center.basis};
-    for (int i = 0; i < 3; ++i) forms.equations[i].slope = slopes(g[i]);
-    for (int r = 0; r < 3; ++r)
-        for (int j = 0; j < 3; ++j) forms.naive.basis[r][j] = jets[r][j].value;
-    // The basis's mean-value form b(m) + sum_k db/dx_k (X_k - m_k), then intersected with the
-    // naive enclosure (both hold the basis at every point of the box).
+    // Hansen's mean-value form, the producer's six Jet passes: slope k over the box with x_l at
+    // the centre for l > k (f(x) - f(m) telescopes over the points (x_1..x_k, m_(k+1)..m_6), which
+    // lie in that box). Row r of the basis depends on x_(2r) and x_(2r+1) only, so in pass k the
+    // rows before r = k/2 are the naive rows over the box, the rows after it the centre's rows,
+    // both constants, and an equation whose vector has no b_r has slope 0 there.
+    const std::array<Triple, 6> triples = configuration_triples(box.configuration);
     for (int k = 0; k < chart_dimension; ++k) {
+        const int r = k / 2;
+        const Rows<Gradient> rows = hansen_rows(box, forms, k, setting);
+        for (int i = 0; i < 3; ++i)
+            if (triples[3 + i][r] != 0)
+                forms.equations[i].slope[k] = slope_at(half_norm_power_of(combination_of(rows, triples[3 + i]), setting), k);
+        forms.determinant.slope[k] = slope_at(determinant_of(rows), k);
+        // The basis's mean-value form b(m) + sum_k db/dx_k (X_k - m_k) (only row r moves in x_k).
         const Real offset = box.x[k] - forms.center[k];
-        for (int r = 0; r < 3; ++r)
-            for (int j = 0; j < 3; ++j)
-                if (jets[r][j].slope[k]) forms.basis[r][j] = forms.basis[r][j] + *jets[r][j].slope[k] * offset;
+        for (int j = 0; j < 3; ++j)
+            if (rows[r][j].slope[k]) forms.basis[r][j] = forms.basis[r][j] + *rows[r][j].slope[k] * offset;
     }
+    // Then intersected with the naive enclosure (both hold the basis at every point of the box).
     for (int r = 0; r < 3; ++r)
         for (int j = 0; j < 3; ++j) {
             Real both(precision);
@@ -254,22 +282,6 @@ Real median(const Real& x) {
     Real r = outward(m, m, x.precision());
     mpfr_clears(half_lo, half_hi, m, static_cast<mpfr_ptr>(nullptr));
     return r;
-}
-
-int widest_coordinate(const ChartPoint& x) {
-    mpfr_t widest, w;
-    mpfr_inits2(53, widest, w, static_cast<mpfr_ptr>(nullptr));
-    int index = 0;
-    mpfr_sub(widest, x[0].hi(), x[0].lo(), MPFR_RNDU);
-    for (int k = 1; k < chart_dimension; ++k) {
-        mpfr_sub(w, x[k].hi(), x[k].lo(), MPFR_RNDU);
-        if (mpfr_greater_p(w, widest)) {
-            mpfr_swap(w, widest);
-            index = k;
-        }
-    }
-    mpfr_clears(widest, w, static_cast<mpfr_ptr>(nullptr));
-    return index;
 }
 
 }  // namespace superpack_checker

@@ -9,9 +9,9 @@
 // are b_i = 2 v_i / ||v_i||_q, and the configuration's three further vectors w_i give the
 // equations g_i = sum_j |w_ij / 2|^q - 1 = 0.
 //
-// The centres and splits of boxes are binary64 rules (Boost's median, the upward-rounded width),
-// computed here with MPFR at 53 bits: the checker must cut its boxes exactly where the producer
-// did, since the tree's stored ends refer to them.
+// The centres and splits of boxes are at Boost's binary64 median, computed here with MPFR at 53
+// bits: the checker must cut its boxes exactly where the producer did, since the tree's stored
+// ends refer to them (the split coordinate is written in the tree).
 #pragma once
 #include <array>
 #include <string>
@@ -72,8 +72,12 @@ struct ChartForms {
     ChartForm determinant;
     ChartValues naive;                    // the plain enclosures over the box
     Matrix3 basis;                        // the naive basis intersected with its mean-value form
+    Matrix3 center_basis;                 // the basis at the centre
 };
 ChartForms chart_forms(const ChartBox& box, const ChartSetting& setting);
+// The form of h_c = sum_j |(c B)_j / 2|^q - 1 over the forms' box (Hansen's slopes, as the
+// producer's): where h_c < 0 the lattice vector c B (c != 0) lies inside 2K.
+ChartForm short_vector_form(const ChartBox& box, const ChartForms& forms, const Triple& c, const ChartSetting& setting);
 
 // f(m) + sum_k slope_k (x_k - m_k), summed in the order of k, for a box x inside the forms' box.
 Real enclose(const ChartForm& form, const ChartPoint& x, const ChartPoint& center);
@@ -91,7 +95,5 @@ std::array<ChartForm, 3> preconditioned(const ChartForms& forms, const std::arra
 bool binary64_box_end(mpfr_srcptr x);
 // Boost's median of a binary64 interval: RN(lo/2 + hi/2), clamped into [lo, hi] (a point).
 Real median(const Real& x);
-// The first coordinate of the largest upward-rounded binary64 width hi - lo.
-int widest_coordinate(const ChartPoint& x);
 
 }  // namespace superpack_checker

@@ -21,6 +21,7 @@ const char* box_reason_name(BoxReason reason) {
         case BoxReason::short_vector: return "short_vector";
         case BoxReason::determinant: return "determinant";
         case BoxReason::closing_region: return "closing_region";
+        case BoxReason::symmetric: return "symmetric";
         case BoxReason::undecided_width: return "undecided_width";
         case BoxReason::undecided_budget: return "undecided_budget";
         case BoxReason::undecided_contract: return "undecided_contract";
@@ -130,7 +131,7 @@ struct CriticalDriver {
     Examined<Box, Leaf> examine(const Box& box, Visit& visit) const {
         const BoxDecision decision = decide_box(box, context, visit.letters);
         if (decision.reason) return leaf_of<Box>(Leaf{box, *decision.reason});
-        if (visit.letters) *visit.letters += 'S';
+        if (visit.letters) *visit.letters += std::string{'S', static_cast<char>('0' + split_coordinate(decision.box))};
         return split_of<Box, Leaf>(decision.box);
     }
     std::array<Box, 2> split(const Box& box) const { return split_box(box); }

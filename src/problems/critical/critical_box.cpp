@@ -21,6 +21,32 @@ std::vector<Coefficients> max_norm_orbit(MinkowskiCase configuration) {
     return {triples[1], triples[2]};
 }
 
+// b1 . (b2 + b3 - b1) = b1 . (b2 + b3) - |b1|^2, whose sign the relabelling
+// (b1, b2, b3) -> (b1, b1 - b2, b1 - b3) of A3 reverses (12.2): the chart keeps it >= 0.
+I sigma_form(const Basis<I>& b) {
+    I sum = b[0][0] * (b[1][0] + b[2][0] - b[0][0]);
+    for (int j = 1; j < 3; ++j) sum = sum + b[0][j] * (b[1][j] + b[2][j] - b[0][j]);
+    return sum;
+}
+
+// The short-vector candidate (not a configuration vector) whose sum |(c B)_j / 2|^(2p) has the
+// least upper end over the box, when that end is below 4 (a cut of h_c >= 0 is then worth trying).
+std::optional<Coefficients> likeliest_short(const ChartBox<I>& box, const Basis<I>& basis, const BoxContext& context) {
+    const std::array<Coefficients, 6> triples = configuration_triples(box.configuration);
+    double least = 4;
+    std::optional<Coefficients> chosen;
+    for (const Coefficients& c : context.short_candidates) {
+        if (std::any_of(triples.begin(), triples.end(), [&](const Coefficients& t) { return representative(t) == c; }))
+            continue;
+        const double upper = half_norm_power(combination(basis, c), context.two_p).upper();
+        if (upper < least) {
+            least = upper;
+            chosen = c;
+        }
+    }
+    return chosen;
+}
+
 // Some coordinate of v certainly larger in size than `bound` (an upper end).
 bool certainly_longer(const std::array<I, 3>& v, const I& bound) {
     for (const I& x : v)
@@ -62,16 +88,42 @@ double widest_width(const ChartPoint& x) { return width_upper(x[widest_coordinat
 constexpr double worth_another_round = 0.25;
 constexpr int contraction_rounds = 4;
 
+// The coordinate to split a box at that the contractors left: the one whose term |dL/dx_k| w_k
+// of the Lagrangian's mean-value form is largest (the "smear" rule: the Lagrangian decides the
+// determinant leaves, most of all), among the coordinates at least 2^-20 as wide as the widest;
+// the widest when every such term is 0. Any choice is sound (both halves are decided); this one
+// more than halves the boxes at p = 2 against the widest coordinate (NOTES.md 12.10).
+int smear_coordinate(const LinearForm& lagrange, const ChartPoint& x) {
+    const int widest = widest_coordinate(x);
+    const double floor = std::ldexp(width_upper(x[widest]), -20);
+    int chosen = widest;
+    double largest = 0;
+    for (int k = 0; k < chart_dimension; ++k) {
+        const double width = width_upper(x[k]);
+        if (!(width >= floor) || width == 0) continue;
+        const double score = std::max(std::fabs(lagrange.slope[k].lower()), std::fabs(lagrange.slope[k].upper())) * width;
+        if (score > largest) {
+            largest = score;
+            chosen = k;
+        }
+    }
+    return chosen;
+}
+
 // Reasons 1-4 of NOTES 12.3 and the contractors: a leaf's reason, or nothing with x the box
-// contracted and `basis` an enclosure of the chart basis over the (uncontracted) box.
-std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x, Basis<I>& basis, const BoxContext& context,
-                                           std::string* trace) {
+// contracted, `basis` an enclosure of the chart basis over the (uncontracted) box and `split`
+// the coordinate to split x at.
+std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x, Basis<I>& basis, int& split,
+                                           const BoxContext& context, std::string* trace) {
     const I& two_p = context.two_p;
     // The leaf's letter in the certificate's tree grammar (NOTES.md 12.8).
     auto leaf = [trace](BoxReason reason, const char* letter) {
         if (trace) *trace += letter;
         return reason;
     };
+    // The swap of b2 and b3 keeps b1 and both configurations (12.2): where v2 and v3 share a
+    // face, the chart keeps a2 <= a3.
+    if (box.face2 == box.face3 && certainly_less(box.x[4], box.x[2])) return leaf(BoxReason::symmetric, "m");
     // Naive enclosures over the box.
     basis = chart_basis(box.x, box.face2, box.face3, two_p);
     const std::array<I, 3> g = chart_equations(basis, box.configuration, two_p);
@@ -79,6 +131,8 @@ std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x
         if (!contains_zero(value)) return leaf(BoxReason::no_configuration, "n");
     for (const Coefficients& c : max_norm_orbit(box.configuration))
         if (certainly_longer(combination(basis, c), basis[0][0])) return leaf(BoxReason::relabelled, "r");
+    if (box.configuration == MinkowskiCase::a3 && certainly_less(sigma_form(basis), context.sigma_margin))
+        return leaf(BoxReason::symmetric, "m");
     if (certainly_less(abs(determinant(basis)), context.volume)) return leaf(BoxReason::volume, "v");
 
     const ChartForms forms = chart_forms(box, two_p);
@@ -101,9 +155,19 @@ std::optional<BoxReason> first_order_tests(const ChartBox<I>& box, ChartPoint& x
     if (trace) *trace += 'C';
     if (!contract_to_configuration(forms, x, trace)) return leaf(BoxReason::no_configuration, ";E");
     const I low = lower_point(context.volume), high = context.threshold;
-    if (!contract_linear(lagrange, {hull(low, high), hull(-high, -low)}, x, forms.center, '3', trace))
+    if (!contract_linear(lagrange, {hull(low, high), hull(-high, -low)}, x, forms.center, "3", trace))
         return leaf(BoxReason::determinant, ";E");
+    // The short-vector cut: the lattice vector c B likeliest to be short (the least upper end of
+    // sum |(c B)_j / 2|^(2p) over the box, c not a configuration vector) is not, on what is kept.
+    if (const std::optional<Coefficients> c = likeliest_short(box, basis, context)) {
+        const std::string name{'4', static_cast<char>('2' + (*c)[0]), static_cast<char>('2' + (*c)[1]), static_cast<char>('2' + (*c)[2])};
+        if (!contract_linear(short_vector_form(forms, *c, two_p), {context.admissible}, x, forms.center, name, trace))
+            return leaf(BoxReason::short_vector, ";E");
+    }
     if (trace) *trace += ';';
+    // Where |det| < T at the centre only a short vector (or the volume) can decide the box, and
+    // the Lagrangian's slopes say nothing about that test: there the widest coordinate is split.
+    split = certainly_less(abs(lagrange.at_center), high) ? widest_coordinate(x) : smear_coordinate(lagrange, x);
     return std::nullopt;
 }
 
@@ -146,6 +210,8 @@ BoxContext box_context(const Rational& p, const DInterval& volume, const DInterv
     context.min_width = min_width;
     context.margin_above = field.integer(1) + field.rational(Rational(1, 1L << 40));
     context.margin_below = field.integer(1) - field.rational(Rational(1, 1L << 40));
+    context.sigma_margin = -field.rational(Rational(1, 1L << 40));
+    context.admissible = hull(field.integer(0), DInterval(1e300));
     for (long a = -2; a <= 2; ++a)
         for (long b = -2; b <= 2; ++b)
             for (long c = -2; c <= 2; ++c) {
@@ -166,7 +232,8 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
             if (trace) round_start = trace->size();
             ChartPoint x = box.x;
             Basis<I> basis;
-            decision.reason = first_order_tests(box, x, basis, context, trace);
+            int split = -1;
+            decision.reason = first_order_tests(box, x, basis, split, context, trace);
             if (decision.reason) return true;
             bool shrunk = false;
             for (int k = 0; k < chart_dimension; ++k)
@@ -174,6 +241,7 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
             if (!shrunk || round == contraction_rounds) {
                 decision.reason = lattice_tests(box, basis, context, trace);
                 box.x = x;
+                box.split = split;
                 return false;
             }
             box.x = x;
@@ -184,6 +252,7 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
         // a fractional power is a coordinate or a sum in [1, 3]): split, and at the floor undecided.
         // The round that threw leaves nothing in the trace: the split is of the box it started with.
         if (trace) trace->resize(round_start);
+        box.split = -1;
         if (widest_width(box.x) < context.min_width) decision.reason = BoxReason::undecided_contract;
         return decision;
     }
@@ -192,13 +261,16 @@ BoxDecision decide_box(const ChartBox<I>& start, const BoxContext& context, std:
     return decision;
 }
 
+int split_coordinate(const ChartBox<I>& box) { return box.split >= 0 ? box.split : widest_coordinate(box.x); }
+
 std::array<ChartBox<I>, 2> split_box(const ChartBox<I>& box) {
-    const int widest = widest_coordinate(box.x);
+    const int k = split_coordinate(box);
     std::array<ChartBox<I>, 2> halves{box, box};
-    const I middle = midpoint(box.x[widest]);
-    halves[0].x[widest] = hull(lower_point(box.x[widest]), middle);
-    halves[1].x[widest] = hull(middle, upper_point(box.x[widest]));
+    const I middle = midpoint(box.x[k]);
+    halves[0].x[k] = hull(lower_point(box.x[k]), middle);
+    halves[1].x[k] = hull(middle, upper_point(box.x[k]));
     halves[0].depth = halves[1].depth = box.depth + 1;
+    halves[0].split = halves[1].split = -1;
     return halves;
 }
 

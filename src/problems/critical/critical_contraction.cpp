@@ -14,7 +14,7 @@ namespace {
 // The margin of a cut: 2^-20 of the coordinate's width (NOTES.md 12.8).
 constexpr int margin_exponent = -20;
 
-void trace_cut(std::string* trace, char form_name, int k, char side, double end) {
+void trace_cut(std::string* trace, const std::string& form_name, int k, char side, double end) {
     if (!trace) return;
     std::uint64_t bits;
     std::memcpy(&bits, &end, sizeof bits);
@@ -29,7 +29,7 @@ void trace_cut(std::string* trace, char form_name, int k, char side, double end)
 }  // namespace
 
 bool contract_linear(const LinearForm& form, const std::vector<DInterval>& targets, ChartPoint& x, const ChartPoint& center,
-                     char form_name, std::string* trace) {
+                     const std::string& form_name, std::string* trace) {
     for (int k = 0; k < chart_dimension; ++k) {
         if (contains_zero(form.slope[k])) continue;
         DInterval rest = form.at_center;
@@ -46,7 +46,7 @@ bool contract_linear(const LinearForm& form, const std::vector<DInterval>& targe
             kept = true;
         }
         if (!kept) {
-            if (trace) *trace += std::string{form_name, static_cast<char>('0' + k), 'x'};
+            if (trace) *trace += form_name + std::string{static_cast<char>('0' + k), 'x'};
             return false;
         }
         if (narrowed.lower() > x[k].lower()) trace_cut(trace, form_name, k, 'l', narrowed.lower());
@@ -102,7 +102,7 @@ bool contract_to_configuration(const ChartForms& forms, ChartPoint& x, std::stri
     const std::vector<DInterval> zero{DInterval(0.0)};
     for (int i = 0; i < 3; ++i) {
         const LinearForm preconditioned = combine({inverse[i][0], inverse[i][1], inverse[i][2]}, equations);
-        if (!contract_linear(preconditioned, zero, x, forms.center, static_cast<char>('0' + i), trace)) return false;
+        if (!contract_linear(preconditioned, zero, x, forms.center, std::string(1, static_cast<char>('0' + i)), trace)) return false;
     }
     return true;
 }

@@ -13,6 +13,9 @@
 //                     Lagrangian det - sum lambda_i g_i, equal to det where every g_i = 0),
 //   closing_region    the box maps into a closing region of a certified local minimiser
 //                     (problems/critical/closing_region.hpp), where det >= det B* >= T,
+//   symmetric         the box lies outside the fundamental domain of the relabellings that
+//                     keep b1 (12.2): a2 > a3 where v2 and v3 share a face, or, for A3,
+//                     b1 . (b2 + b3) < |b1|^2 (the lattice is covered where it is relabelled),
 //   undecided_width / undecided_budget / undecided_contract: not decided (then the answer is
 //                     undecided, never proved).
 // If every leaf is decided, every lattice packing of K has |det| >= T, so its density is at
@@ -37,11 +40,12 @@ enum class BoxReason {
     short_vector,
     determinant,
     closing_region,
+    symmetric,
     undecided_width,
     undecided_budget,
     undecided_contract,
 };
-constexpr int box_reasons = 9;
+constexpr int box_reasons = 10;
 const char* box_reason_name(BoxReason reason);
 bool decided(BoxReason reason);
 
@@ -51,6 +55,9 @@ struct ChartBox {
     int face2 = 0, face3 = 0;
     std::array<I, chart_dimension> x;
     int depth = 0;
+    // The coordinate to split this box at (decide_box's choice from its last round's forms,
+    // NOTES.md 12.3), or -1: the widest (the rule of split_domain).
+    int split = -1;
 };
 
 // The top-level boxes of the whole domain, in a fixed order: both configurations, every pair of

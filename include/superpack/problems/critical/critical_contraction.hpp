@@ -22,9 +22,10 @@ namespace superpack {
 // enclosures differ from these in the last bits, proves the same cut (NOTES.md 12.8).
 //
 // With a trace, each cut is appended in the tree grammar of the critical-lattice certificate
-// (12.8): form, coordinate, then 'l' or 'h' and the new end's 16 hex digits, or 'x' for empty.
+// (12.8): form (one digit, or '4' and the short vector's three coefficient digits), coordinate,
+// then 'l' or 'h' and the new end's 16 hex digits, or 'x' for empty.
 bool contract_linear(const LinearForm& form, const std::vector<DInterval>& targets, ChartPoint& x, const ChartPoint& center,
-                     char form_name = '3', std::string* trace = nullptr);
+                     const std::string& form_name = "3", std::string* trace = nullptr);
 
 // The configuration's points (g_1 = g_2 = g_3 = 0) of the box: contract_linear on the three
 // combinations C g, C the inverse of the midpoint Jacobian on three pivot columns (chosen by

@@ -6,6 +6,7 @@
 #include <array>
 #include <vector>
 
+#include "superpack/arith/jet.hpp"
 #include "superpack/problems/critical/critical.hpp"
 
 namespace superpack {
@@ -22,12 +23,18 @@ struct ChartForms {
     std::array<LinearForm, 3> equations;  // g_1, g_2, g_3
     LinearForm determinant;
     Basis<DInterval> basis;  // the basis's own mean-value enclosure over X
+    Basis<DInterval> center_basis;
+    std::array<Basis<Jet<DInterval>>, chart_dimension> passes;  // pass k: the basis and its x_k-slopes (Hansen's box)
 };
 
 ChartForms chart_forms(const ChartBox<DInterval>& box, const DInterval& two_p);
 
 // f(m) + sum_k slope_k (x_k - m_k) over the box x (which must lie in the box the slopes are over).
 DInterval enclose(const LinearForm& form, const ChartPoint& x, const ChartPoint& center);
+
+// The form of h_c = sum_j |(c B)_j / 2|^(2p) - 1 (c B a lattice vector, c != 0): where h_c < 0,
+// c B lies inside 2K and the lattice is not admissible (NOTES.md 12.3, the short-vector cut).
+LinearForm short_vector_form(const ChartForms& forms, const Coefficients& c, const DInterval& two_p);
 
 // sum_i weight_i f_i: the form of the combination (the weights are points, any values).
 LinearForm combine(const std::vector<double>& weights, const std::vector<LinearForm>& forms);
