@@ -3,10 +3,20 @@
 //      speedup (goal 1.8x) as the ratio of the two wall times; the leaves must be the same (a
 //      box's reason does not depend on the order of the queue);
 //   2. the same run as 4 shards merged (merge_shards): the same status and the same leaves;
-//   3. the boxes around C1's images (half-width 5e-5) at gap 0, where the closing region decides.
+//   3. the boxes around C1's images (half-width 5e-5) at gap 0, where the closing region decides;
+//   4. the cost of a proof, for issue 45: one shard's certificate at p = 2 (gap 0) and one at
+//      p = 3/5 (gap 9e-5), written by `superpack critical --certificate`: the producer's boxes a
+//      second on 1 thread, the certificate's bytes a box, and the checker's boxes a second on 1
+//      thread (`superpack verify`, the process's wall time, best of two).
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
+#include "command_run.hpp"
 #include "superpack/problems/critical/critical.hpp"
 
 using namespace superpack;
@@ -23,6 +33,34 @@ bool same_leaves(const CriticalResult<DInterval>& a, const CriticalResult<DInter
 
 const char* verdict(const CriticalResult<DInterval>& result) {
     return result.status == Outcome::proved ? "proved" : "NOT PROVED";
+}
+
+// Section 4: one shard written as a certificate, and replayed by the checker.
+bool proof_cost(const std::string& directory, const char* p, const char* gap, int split, const char* shard) {
+    const std::string file = directory + "/critical-p" + p + ".json";
+    const CommandRun producer = run_json(std::string("critical --threads 1 --p ") + p + " --gap " + gap + " --split " +
+                                         std::to_string(split) + " --shard " + shard + " --certificate " + file);
+    struct stat status {};
+    if (producer.document.is_discarded() || producer.document.value("status", "") != "proved" ||
+        stat(file.c_str(), &status) != 0) {
+        std::printf("critical --p %s --gap %s, shard %s at --split %d: NOT PROVED\n", p, gap, shard, split);
+        return false;
+    }
+    double checker = 1e9;
+    bool valid = true;
+    for (int run = 0; run < 2; ++run) {
+        const CommandRun replay = run_json("verify " + file);
+        valid = valid && replay.document.value("verdict", "") == "valid";
+        checker = std::min(checker, replay.seconds);
+    }
+    const double boxes = producer.document.at("processed").get<double>();
+    std::printf("critical --p %s --gap %s, shard %s at --split %d: %.0f boxes; producer %.0f boxes/s (1 thread, %.2f s), "
+                "certificate %.1f bytes/box (%.0f kB), checker %.0f boxes/s (1 process, %.2f s)%s\n",
+                p, gap, shard, split, boxes, boxes / producer.document.at("seconds").get<double>(),
+                producer.document.at("seconds").get<double>(), static_cast<double>(status.st_size) / boxes,
+                static_cast<double>(status.st_size) / 1e3, boxes / checker, checker, valid ? "" : " CHECKER REJECTS");
+    std::remove(file.c_str());
+    return valid;
 }
 
 }  // namespace
@@ -72,7 +110,13 @@ int main() {
     std::printf("critical --p 2, gap 0, half-width 5e-5 around C1's images: %s, %ld boxes (%ld closing_region), %.2f s\n",
                 verdict(near), near.processed, near.counts[static_cast<int>(BoxReason::closing_region)], seconds_since(start));
 
+    char directory[] = "/tmp/superpack-bench-XXXXXX";
+    bool costs = mkdtemp(directory) != nullptr;
+    costs = costs && proof_cost(directory, "2", "0", 4, "7/336");
+    costs = costs && proof_cost(directory, "0.6", "9e-5", 6, "200/672");
+    rmdir(directory);
+
     const bool proved = whole[0].status == Outcome::proved && same_leaves(whole[0], whole[1]) && merge_agrees &&
-                        near.status == Outcome::proved;
+                        near.status == Outcome::proved && costs;
     return proved ? 0 : 1;  // a missed speedup is reported, not an error
 }

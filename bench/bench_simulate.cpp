@@ -4,32 +4,13 @@
 // in the same run: `superpack best --p P` (which simulate also runs, for its comparison), best of
 // three runs, as a single run of a quarter of a second varied by a tenth between runs.
 #include <algorithm>
-#include <array>
-#include <chrono>
 #include <cstdio>
-#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "command_run.hpp"
+
 namespace {
-
-struct Run {
-    nlohmann::json document;
-    double seconds = 0;
-};
-
-Run run_json(const std::string& arguments) {
-    const std::string command = std::string(SUPERPACK_BINARY) + " " + arguments + " --json 2>/dev/null";
-    const auto start = std::chrono::steady_clock::now();
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-    std::string output;
-    std::array<char, 4096> buffer{};
-    while (pipe && fgets(buffer.data(), buffer.size(), pipe.get())) output += buffer.data();
-    Run run;
-    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    run.document = nlohmann::json::parse(output, nullptr, false);
-    return run;
-}
 
 double lower(const nlohmann::json& enclosure) { return std::stod(enclosure.at("lo").get<std::string>()); }
 
@@ -45,8 +26,8 @@ int main() {
     for (const Case& c : {Case{"2", 2, 20000}, Case{"0.8", 2, 20000}, Case{"0.6", 4, 20000}}) {
         double reference = 1e9;
         for (int run = 0; run < 3; ++run) reference = std::min(reference, run_json(std::string("best --p ") + c.p).seconds);
-        const Run run = run_json(std::string("simulate --p ") + c.p + " --n " + std::to_string(c.particles) + " --steps " +
-                                 std::to_string(c.steps));
+        const CommandRun run = run_json(std::string("simulate --p ") + c.p + " --n " + std::to_string(c.particles) +
+                                        " --steps " + std::to_string(c.steps));
         const auto& d = run.document;
         if (d.is_discarded() || !d.value("certified", false)) {
             std::printf("simulate --p %s --n %d: not certified FAIL\n", c.p, c.particles);
