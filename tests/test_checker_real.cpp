@@ -5,6 +5,7 @@
 // least), 192 and 256 (the last with the ends stored inline) and 320 (ends on the heap); ends from
 // 1e-300 to 1e300, both signs, zeros, points, infinite ends and ends that need all the bits.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <functional>
 #include <mpfi.h>
 #include <random>
@@ -211,5 +212,134 @@ TEST_CASE("checker Real: a NaN end stays NaN through hull and products, where MP
         CHECK(mpfr_nan_p(result.lo()));
         CHECK_FALSE(superpack_checker::positive(result));
         CHECK_FALSE(superpack_checker::negative(result));
+    }
+}
+
+namespace {
+
+// An interval with one NaN end: [NaN, end] (nan_lower) or [end, NaN].
+Real half_undefined(bool nan_lower, long end, mpfr_prec_t precision) {
+    Real x = superpack_checker::integer(end, precision);
+    mpfr_set_nan(nan_lower ? x.lower_end() : x.upper_end());
+    return x;
+}
+
+// MPFI's interval with the same ends as x, as they are (mpfi_interv_fr would make both NaN).
+void set_ends(Reference& reference, const Real& x) {
+    mpfr_set(&reference.get()->left, x.lo(), MPFR_RNDD);  // exact: the same precision
+    mpfr_set(&reference.get()->right, x.hi(), MPFR_RNDU);
+}
+
+}  // namespace
+
+TEST_CASE("checker Real: an end NaN undoes the whole interval in quotients, |x| and x^2, as in MPFI") {
+    using namespace superpack_checker;
+    constexpr mpfr_prec_t precision = 128;
+    // Reachable by arithmetic: an overflow [oo, oo] times [-1, 0] is [-oo, NaN] (0 oo has no
+    // value), exp of it [0, NaN], and -(1 + exp) is [NaN, -1]: the NaN is a lower end, and mpfr_sgn
+    // calls NaN 0, so [NaN, -1] once counted as "at or above 0". Its true range lies in [-2, -1].
+    Real overflow(precision);
+    mpfr_set_inf(overflow.lower_end(), 1);
+    mpfr_set_inf(overflow.upper_end(), 1);
+    const Real a = -(integer(1, precision) + exp(hull(integer(-1, precision), integer(0, precision)) * overflow));
+    REQUIRE(mpfr_nan_p(a.lo()));
+    REQUIRE(mpfr_cmp_si(a.hi(), -1) == 0);
+    const Real one_two = hull(integer(1, precision), integer(2, precision));
+    // a / [1, 2] reaches -1/2 (a = -1, b = 2); |a| and a^2 are at least 1: none may be bounded as
+    // if a were at or above 0 ([NaN, -1], [NaN, -1] and [NaN, 1] before).
+    CHECK_FALSE(less(a / one_two, rational(mpq_class(-9, 10), precision)));
+    CHECK_FALSE(negative(abs(a)));
+    CHECK_FALSE(less(square(a), integer(2, precision)));
+
+    const Real minus_two_minus_one = -one_two;
+    for (const bool nan_lower : {true, false}) {
+        for (const long end : {-2L, 0L, 2L}) {
+            const Real x = half_undefined(nan_lower, end, precision);
+            INFO((nan_lower ? "[NaN, " : "[") << end << (nan_lower ? "]" : ", NaN]"));
+            Reference in(precision), out(precision);
+            set_ends(in, x);
+            for (const Real* divisor : {&one_two, &minus_two_minus_one}) {
+                Reference by(precision);
+                set_ends(by, *divisor);
+                mpfi_div(out.get(), in.get(), by.get());
+                CHECK(same_ends(x / *divisor, out));
+                if (end != 0) {  // a divisor with a NaN end that excludes 0: [NaN, -2] or [2, NaN]
+                    mpfi_div(out.get(), by.get(), in.get());
+                    if (excludes_zero(x)) CHECK(same_ends(*divisor / x, out));
+                }
+            }
+            mpfi_abs(out.get(), in.get());
+            CHECK(same_ends(abs(x), out));
+            mpfi_sqr(out.get(), in.get());
+            CHECK(same_ends(square(x), out));
+            CHECK(mpfr_nan_p(abs(x).hi()));
+            CHECK(mpfr_nan_p(square(x).hi()));
+        }
+    }
+}
+
+TEST_CASE("checker Real: building intervals from ends, points of them, intersections, mixed precisions") {
+    using namespace superpack_checker;
+    // outward and doubles take their ends in either order; a NaN end makes both NaN (mpfi_interv_fr
+    // and mpfi_interv_d do the same; std::min(1.0, NaN) would have dropped it).
+    mpfr_t three, third, nan;
+    mpfr_inits2(320, three, third, nan, static_cast<mpfr_ptr>(nullptr));
+    mpfr_set_si(three, 3, MPFR_RNDN);
+    mpfr_set_si(third, 1, MPFR_RNDN);
+    mpfr_div_si(third, third, 3, MPFR_RNDN);  // not exact in 128 bits
+    mpfr_set_nan(nan);
+    const Real reversed = outward(three, third, 128);
+    CHECK(mpfr_cmp(reversed.lo(), third) < 0);
+    CHECK(mpfr_cmp_si(reversed.hi(), 3) == 0);
+    const Real ordered = outward(third, three, 128);
+    CHECK(mpfr_equal_p(ordered.lo(), reversed.lo()));
+    CHECK(mpfr_nan_p(outward(nan, three, 128).hi()));
+    CHECK(mpfr_nan_p(outward(three, nan, 128).lo()));
+    const Real doubled = doubles(2.5, -0.1, 128);
+    CHECK(mpfr_cmp_d(doubled.lo(), -0.1) == 0);
+    CHECK(mpfr_cmp_d(doubled.hi(), 2.5) == 0);
+    CHECK(mpfr_nan_p(doubles(1.0, std::nan(""), 128).lo()));
+    CHECK(mpfr_nan_p(doubles(std::nan(""), 1.0, 128).hi()));
+    // exact_interval refuses an end that needs more bits, and then leaves the result alone.
+    Real exact = integer(7, 128);
+    CHECK_FALSE(exact_interval(exact, three, third));
+    CHECK_FALSE(exact_interval(exact, third, three));
+    mpfr_neg(three, three, MPFR_RNDN);
+    CHECK_FALSE(exact_interval(exact, three, third));  // the upper end alone inexact
+    CHECK_FALSE(exact_interval(exact, third, three));
+    mpfr_neg(three, three, MPFR_RNDN);
+    CHECK(mpfr_cmp_si(exact.lo(), 7) == 0);
+    CHECK(mpfr_cmp_si(exact.hi(), 7) == 0);
+    CHECK(exact_interval(exact, three, three));
+    CHECK(mpfr_cmp_si(exact.lo(), 3) == 0);
+    mpfr_clears(three, third, nan, static_cast<mpfr_ptr>(nullptr));
+
+    // Points, intersections and the four operations between two precisions, against MPFI.
+    Intervals narrow(128), wide(320);
+    for (int k = 0; k < 2000; ++k) {
+        const Real a = narrow.next(), b = wide.next();
+        INFO(text(a) << " and " << text(b));
+        Reference in_a(a), in_b(b), point(128), out(320);
+        mpfi_interv_fr(point.get(), a.lo(), a.lo());
+        CHECK(same_ends(lower_point(a), point));
+        mpfi_interv_fr(point.get(), a.hi(), a.hi());
+        CHECK(same_ends(upper_point(a), point));
+        Real meet(128);
+        if (intersect(meet, a, b)) {
+            mpfi_intersect(out.get(), in_a.get(), in_b.get());
+            CHECK(same_ends(meet, out));
+        } else {
+            CHECK((mpfr_less_p(a.hi(), b.lo()) || mpfr_less_p(b.hi(), a.lo())));
+        }
+        mpfi_add(out.get(), in_a.get(), in_b.get());
+        if (!mpfr_nan_p(&out.get()->left) && !mpfr_nan_p(&out.get()->right)) CHECK(same_ends(a + b, out));
+        mpfi_sub(out.get(), in_b.get(), in_a.get());
+        if (!mpfr_nan_p(&out.get()->left) && !mpfr_nan_p(&out.get()->right)) CHECK(same_ends(b - a, out));
+        mpfi_mul(out.get(), in_a.get(), in_b.get());
+        CHECK(same_ends(a * b, out));
+        if (excludes_zero(a) && finite(a) && finite(b)) {
+            mpfi_div(out.get(), in_b.get(), in_a.get());
+            CHECK(same_ends(b / a, out));
+        }
     }
 }

@@ -1,6 +1,7 @@
 #include "real.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -76,7 +77,10 @@ Real undefined_real(mpfr_prec_t precision) {
 
 bool zero_point(const Real& x) { return mpfr_zero_p(x.lo()) && mpfr_zero_p(x.hi()); }
 
-// Where an interval lies: at or above 0, at or below 0, or across 0 (both ends off it).
+// Where an interval lies: at or above 0, at or below 0, or across 0 (both ends off it). Only for
+// intervals without a NaN end: mpfr_sgn calls NaN 0, so [NaN, -1] would be "at or above 0", and
+// an operation choosing its ends by it would bound the wrong end (MPFI's mpfi_div, mpfi_abs and
+// mpfi_sqr return NaN for a NaN end before they look at signs; the operations below do the same).
 enum class Side { nonnegative, nonpositive, across };
 Side side(const Real& x) {
     if (mpfr_sgn(x.lo()) >= 0) return Side::nonnegative;
@@ -136,6 +140,7 @@ bool exact_interval(Real& result, mpfr_srcptr lo, mpfr_srcptr hi) {
 }
 
 Real outward(mpfr_srcptr lo, mpfr_srcptr hi, mpfr_prec_t precision) {
+    if (mpfr_nan_p(lo) || mpfr_nan_p(hi)) return undefined_real(precision);  // as mpfi_interv_fr
     Real r(precision);
     const bool reversed = mpfr_greater_p(lo, hi);
     mpfr_set(r.lower_end(), reversed ? hi : lo, MPFR_RNDD);
@@ -144,6 +149,8 @@ Real outward(mpfr_srcptr lo, mpfr_srcptr hi, mpfr_prec_t precision) {
 }
 
 Real doubles(double lo, double hi, mpfr_prec_t precision) {
+    // std::min(1.0, NaN) and std::max(1.0, NaN) are both 1: a NaN end would be dropped.
+    if (std::isnan(lo) || std::isnan(hi)) return undefined_real(precision);  // as mpfi_interv_d
     Real r(precision);
     mpfr_set_d(r.lower_end(), std::min(lo, hi), MPFR_RNDD);
     mpfr_set_d(r.upper_end(), std::max(lo, hi), MPFR_RNDU);
@@ -216,6 +223,7 @@ Real operator*(const Real& a, const Real& b) {
 }
 Real operator/(const Real& a, const Real& b) {
     if (!excludes_zero(b)) throw std::domain_error("division by an interval that may contain 0");
+    if (undefined(a) || undefined(b)) return undefined_real(joint(a, b));  // before side(a): see Side
     Real r(joint(a, b));
     mpfr_ptr lo = r.lower_end();
     mpfr_ptr hi = r.upper_end();
@@ -248,6 +256,7 @@ Real log1p(const Real& x) {
     return increasing(x, mpfr_log1p);
 }
 Real abs(const Real& x) {
+    if (undefined(x)) return undefined_real(x.precision());  // before side(x): see Side
     switch (side(x)) {
         case Side::nonnegative: return x;
         case Side::nonpositive: return -x;
@@ -260,6 +269,7 @@ Real abs(const Real& x) {
     return r;
 }
 Real square(const Real& x) {
+    if (undefined(x)) return undefined_real(x.precision());  // before side(x): see Side
     if (side(x) != Side::across) {
         const Real a = abs(x);
         Real r(x.precision());

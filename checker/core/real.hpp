@@ -50,10 +50,10 @@ Real integer(long n, mpfr_prec_t precision);
 Real rational(const mpq_class& q, mpfr_prec_t precision);  // outward rounded
 // Exactly [lo, hi]; false (and nothing set) when an end needs more than `precision` bits.
 bool exact_interval(Real& result, mpfr_srcptr lo, mpfr_srcptr hi);
-// [lo, hi] rounded outward to `precision` (ends in either order).
+// [lo, hi] rounded outward to `precision` (ends in either order; a NaN end makes both NaN).
 Real outward(mpfr_srcptr lo, mpfr_srcptr hi, mpfr_prec_t precision);
 Real pi(mpfr_prec_t precision);
-Real doubles(double lo, double hi, mpfr_prec_t precision);  // [lo, hi], exact from 53 bits on
+Real doubles(double lo, double hi, mpfr_prec_t precision);  // [lo, hi], exact from 53 bits on (as outward)
 
 Real operator+(const Real& a, const Real& b);
 Real operator-(const Real& a, const Real& b);
