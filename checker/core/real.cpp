@@ -28,17 +28,17 @@ void copy_end(mpfr_ptr to, mp_limb_t* storage, mpfr_srcptr from, mpfr_prec_t pre
 }  // namespace
 
 void Real::attach(mpfr_prec_t precision) {
-    precision_ = precision;
     const std::size_t limbs = limbs_for(precision);
     mp_limb_t* storage = inline_;
     std::size_t stride = inline_limbs;
     if (limbs > inline_limbs) {
-        heap_.reset(new mp_limb_t[2 * limbs]);
+        heap_.reset(new mp_limb_t[2 * limbs]);  // first, so that a bad_alloc leaves the Real as it was
         storage = heap_.get();
         stride = limbs;
     } else if (heap_) {
         heap_.reset();
     }
+    precision_ = precision;
     mpfr_custom_init(storage, precision);
     mpfr_custom_init(storage + stride, precision);
     mpfr_custom_init_set(&value_->left, MPFR_ZERO_KIND, 0, precision, storage);
