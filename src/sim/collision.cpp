@@ -86,6 +86,11 @@ MovingBody advance(const MovingBody& body, double t) {
 }
 
 double distance(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double scale, Vector3* normal) {
+    return distance(shape, a, b, scale, normal, SeparationHint{});
+}
+
+double distance(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double scale, Vector3* normal,
+                const SeparationHint& hint) {
     const Vector3 delta = b.center - a.center;
     if (shape.p() == 1) {
         if (normal) *normal = unit(delta);
@@ -93,7 +98,7 @@ double distance(const SuperballShape& shape, const MovingBody& a, const MovingBo
     }
     const Placement first{{0, 0, 0}, rotation_matrix(a.orientation)};
     const Placement second{(1 / scale) * delta, rotation_matrix(b.orientation)};
-    const Separation separated = separation(shape, first, second);
+    const Separation separated = separation(shape, first, second, hint);
     if (normal) *normal = separated.normal;
     return separated.overlapping ? 0.0 : scale * separated.distance;
 }
@@ -130,20 +135,74 @@ double normal_gap_rate(const MovingBody& a, const MovingBody& b, double scale, d
 // they are between m and the tolerance apart. (While they are within the tolerance and opening,
 // right after a collision, the step is m/rate when d < 2m: only then could the bodies come
 // closer than m, by rounding-level amounts, as they are opening.)
+namespace {
+
+// Loose GJK runs (the fast loop's) stop at this relative accuracy while the distance bound is at
+// least `accurate_below` contact tolerances; nearer, GJK converges fully, so the contact decision
+// (d below one tolerance) is the reference's. A step then advances at least 95% as far as with
+// the exact distance, for fewer GJK iterations on curved bodies (linear convergence).
+constexpr double loose_accuracy = 0.05;
+constexpr double accurate_below = 4;
+
+// The distance bound for first_contact, and its plane's normal in `normal`: the reference's full
+// GJK run (`warm` false), else a loose run started from `normal` (the pair's last plane) and,
+// near contact, a full one started from the loose run's normal.
+double advancement_distance(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double scale, double tolerance,
+                            Vector3& normal, bool warm) {
+    if (!warm) return distance(shape, a, b, scale, &normal);
+    const double d = distance(shape, a, b, scale, &normal, SeparationHint{normal, loose_accuracy});
+    if (d >= accurate_below * tolerance) return d;
+    return distance(shape, a, b, scale, &normal, SeparationHint{normal, 0});
+}
+
+ContactPrediction advance_to_contact(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double a0, double G,
+                                     double horizon, const ContactOptions& options, const SeparationHint* hint);
+
+// How fast rotation can change the two bodies' support values along a fixed plane normal n:
+// d/dt h(R^T n) = <omega x x, n> = <omega, x x n>, x the support point's offset, so at most
+// |omega x n| a_h R_c (`reach` = a_h R_c; the reference's bound) and at most |omega| a_h L
+// (`lever_reach` = a_h L) with the lever L = max |x x n| = max sqrt(|x|^2 - h^2) <=
+// sqrt(R_c^2 - r_in^2) (|x| <= R_c, h >= r_in), 0.66 against R_c = 1.20 at p = 1.5. The fast
+// loop takes the smaller; the reference passes lever_reach = reach and gets its own bound.
+double spin_rate(const Vector3& omega_a, const Vector3& omega_b, const Vector3& n, double reach, double lever_reach) {
+    const double turning_a = norm(cross(omega_a, n)), turning_b = norm(cross(omega_b, n));
+    if (!(lever_reach < reach)) return reach * (turning_a + turning_b);  // the reference's expression, to the bit
+    return std::min(reach * turning_a, lever_reach * norm(omega_a)) + std::min(reach * turning_b, lever_reach * norm(omega_b));
+}
+
+double lever(const SuperballShape& shape) {
+    const double outer = shape.circumradius(), inner = shape.inradius();
+    return std::sqrt(std::max(0.0, outer * outer - inner * inner));
+}
+
+}  // namespace
+
 ContactPrediction first_contact(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double a0, double G,
                                 double horizon, const ContactOptions& options) {
+    return advance_to_contact(shape, a, b, a0, G, horizon, options, nullptr);
+}
+
+ContactPrediction first_contact(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double a0, double G,
+                                double horizon, const ContactOptions& options, const SeparationHint& hint) {
+    return advance_to_contact(shape, a, b, a0, G, horizon, options, &hint);
+}
+
+namespace {
+
+ContactPrediction advance_to_contact(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double a0, double G,
+                                     double horizon, const ContactOptions& options, const SeparationHint* hint) {
     if (!(a0 > 0) || !(G >= 0) || !(horizon >= 0)) throw std::invalid_argument("first_contact: needs a0 > 0, G >= 0, horizon >= 0");
     const bool ball = shape.p() == 1;
     const double radius = shape.circumradius();
     const double largest_scale = a0 + G * horizon;
     const Vector3 relative = b.velocity - a.velocity;
-    const double spin = ball ? 0.0 : largest_scale * radius;  // a_h R_c, the reach of rotation
+    const double spin = ball ? 0.0 : largest_scale * radius, lever_reach = hint ? largest_scale * lever(shape) : spin;  // spin_rate
     // The bound for any direction, used when no separating plane is known (d = 0).
     const double w = norm(relative) + 2 * G * radius + spin * (norm(a.angular_velocity) + norm(b.angular_velocity));
     ContactPrediction result;
     double t = 0;
     bool have_plane = false;
-    Vector3 plane{1, 0, 0};
+    Vector3 plane = hint ? hint->direction : Vector3{1, 0, 0};  // the fast loop starts GJK at the pair's last plane
     int since_gjk = 0;
     for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
         result.iterations = iteration;
@@ -161,9 +220,9 @@ ContactPrediction first_contact(const SuperballShape& shape, const MovingBody& a
             if (!(d >= 2 * tolerance)) d = -1;
         }
         if (d < 0) {
-            d = distance(shape, at_a, at_b, scale, &n);
+            d = advancement_distance(shape, at_a, at_b, scale, tolerance, n, hint != nullptr);
             have_plane = !ball && d > 0;
-            plane = n;
+            plane = result.normal = n;
             since_gjk = 0;
         } else {
             ++since_gjk;
@@ -182,7 +241,7 @@ ContactPrediction first_contact(const SuperballShape& shape, const MovingBody& a
         // <x, omega x n> with x the support offset, |x| <= R_c), plus G R_c per body: a
         // sharper bound than w, and as rigorous, while the plane separates the bodies.
         const double rate = d > 0 ? std::max(0.0, -dot(n, relative)) + 2 * G * radius +
-                                        spin * (norm(cross(a.angular_velocity, n)) + norm(cross(b.angular_velocity, n)))
+                                        spin_rate(a.angular_velocity, b.angular_velocity, n, spin, lever_reach)
                                   : w;
         if (!(rate > 0)) break;  // the gap cannot shrink
         // Aim at a gap of a quarter of the tolerance rather than at 0, so that a contact is
@@ -201,6 +260,8 @@ ContactPrediction first_contact(const SuperballShape& shape, const MovingBody& a
     result.time = horizon;
     return result;
 }
+
+}  // namespace
 
 CollisionResponse collide(double k, double scale, double G, const Contact& contact, MovingBody& a, MovingBody& b) {
     const double inertia = k * scale * scale;

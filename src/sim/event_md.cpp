@@ -6,8 +6,10 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "superpack/sim/neighbour_regions.hpp"
 #include "superpack/sim/periodic_images.hpp"
 
 namespace superpack::sim {
@@ -51,9 +53,13 @@ struct Particle {
     long counter = 0;  // collisions (and rescalings) so far: an event predicted before is stale
 };
 
+// An event's partner when it is no collision: re-predict (the horizon, or a capped prediction),
+// or leave the region (neighbour lists).
+constexpr int predict_again = -1, leave_region = -2;
+
 struct Event {
     double time = infinity;
-    int partner = -1;   // -1: re-predict
+    int partner = predict_again;  // or a particle, or leave_region
     Vector3 offset{};   // added to the partner's position: the image it meets
     long partner_counter = 0;
 };
@@ -92,6 +98,9 @@ public:
         if (n_ < 2) throw std::invalid_argument("run_event_md: needs at least two particles");
         if (!(options.growth_rate >= 0) || !std::isfinite(options.growth_rate))
             throw std::invalid_argument("run_event_md: needs a finite growth rate >= 0");
+        if (!(options.skin > 0) || !std::isfinite(options.skin))
+            throw std::invalid_argument("run_event_md: needs a finite skin > 0");
+        fast_ = options.loop == EventLoop::neighbour_lists;
         ball_ = shape.p() == 1;
         radius_ = shape.circumradius();
         k_ = inertia_factor(shape.p());
@@ -137,6 +146,7 @@ public:
         EventMdResult result;
         result.initial_scale = a0_;
         result.initial_energy = kinetic_energy(0);
+        if (fast_) build_regions(0);
         for (int i = 0; i < n_; ++i) predict(i, 0);
         set_stop_time();
         double now = 0;
@@ -151,12 +161,18 @@ public:
             }
             now = event.time;
             ++result.events;
+            if (event.partner == leave_region) {
+                move_region(i, now);
+                ++result.region_moves;
+            }
             if (event.partner < 0 || particles_[event.partner].counter != event.partner_counter) {
                 predict(i, now);
                 continue;
             }
             window.virial += collide(i, event);
             ++result.collisions;
+            if (static_cast<long>(result.collision_log.size()) < options_.collision_log_limit)
+                result.collision_log.push_back({std::min(i, event.partner), std::max(i, event.partner), now});
             if (progress && result.collisions % 1000 == 0)
                 progress({result.collisions, now, scale(now), phi(now), result.pressure});
             if (result.collisions >= options_.max_collisions) {
@@ -211,6 +227,7 @@ private:
             if (kept > 0) {
                 repredict = true;
                 set_stop_time();
+                if (fast_) build_regions(now);
             }
         }
         if (G_ > 0) {
@@ -290,10 +307,15 @@ private:
         particle.time = t;
     }
 
-    // Particle i's earliest event from time t: the first contact with any image of any other
-    // particle within the horizon (searched only up to the best found so far), or a
-    // re-prediction at the horizon (or where a capped prediction stopped).
     void predict(int i, double t) {
+        if (fast_) predict_neighbours(i, t);
+        else predict_all_images(i, t);
+    }
+
+    // The reference loop's prediction: particle i's earliest event from time t, the first
+    // contact with any image of any other particle within the horizon (searched only up to the
+    // best found so far), or a re-prediction at the horizon (or where a capped prediction stopped).
+    void predict_all_images(int i, double t) {
         Event best;
         best.time = t + horizon_;
         const double a = scale(t), largest = scale(t + horizon_);
@@ -347,6 +369,105 @@ private:
         }
         events_[i] = best;
         tree_.set(i, best.time);
+    }
+
+    // The fast loop's prediction: as predict_all_images, but against the neighbours only (no
+    // other body can reach i before i or it leaves its region, which is an event of its own),
+    // with each pair's GJK started from the pair's last normal, and the horizon cut where i
+    // leaves its region.
+    void predict_neighbours(int i, double t) {
+        Event best;
+        best.time = t + horizon_;
+        const double leave = leave_time(i, t);
+        if (leave < best.time) {
+            best.time = leave;
+            best.partner = leave_region;
+        }
+        const MovingBody self = body_at(i, t);
+        const MovingBody first{{0, 0, 0}, self.orientation, self.velocity, self.angular_velocity};
+        // Nearest first: the earliest contact is usually with a near neighbour, and once it is
+        // found the others are searched only up to it.
+        std::vector<Neighbour>& neighbours = regions_.neighbours(i);
+        order_.clear();
+        for (std::size_t k = 0; k < neighbours.size(); ++k) {
+            const Particle& other = particles_[neighbours[k].partner];
+            const Vector3 image = other.position + (t - other.time) * other.velocity + neighbours[k].offset - self.center;
+            order_.push_back({norm(image), static_cast<int>(k)});
+        }
+        std::sort(order_.begin(), order_.end());
+        for (const auto& [length, k] : order_) {
+            Neighbour& entry = neighbours[k];
+            const int j = entry.partner;
+            const Particle& other = particles_[j];
+            const Vector3 image = other.position + (t - other.time) * other.velocity + entry.offset - self.center;
+            // Bounding spheres that cannot meet before the best event so far are skipped.
+            const double reach = norm(other.velocity - self.velocity) * (best.time - t) + 2 * scale(best.time) * radius_;
+            if (!(norm(image) < reach)) continue;
+            MovingBody second = body_at(j, t);
+            second.center = image;
+            ++predictions_;
+            const ContactPrediction prediction =
+                first_contact(shape_, first, second, scale(t), G_, best.time - t, options_.contact, SeparationHint{entry.normal, 0});
+            iterations_ += prediction.iterations;
+            if (dot(prediction.normal, prediction.normal) > 0) entry.normal = prediction.normal;
+            if (prediction.outcome == ContactOutcome::none || !(t + prediction.time < best.time)) continue;
+            best.time = t + prediction.time;
+            if (prediction.outcome == ContactOutcome::capped) {
+                ++capped_;
+                best.partner = predict_again;
+            } else {
+                best.partner = j;
+                best.offset = entry.offset;
+                best.partner_counter = other.counter;
+            }
+        }
+        events_[i] = best;
+        tree_.set(i, best.time);
+    }
+
+    // A lower bound on when body i (its bounding sphere, growing) leaves its region: its centre
+    // moves at |v| and the sphere's radius grows at G R_c.
+    double leave_time(int i, double t) const {
+        const Particle& particle = particles_[i];
+        const Vector3 position = particle.position + (t - particle.time) * particle.velocity;
+        const double room = regions_.radius(i) - scale(t) * radius_ - norm(position - regions_.centre(i));
+        const double speed = norm(particle.velocity) + G_ * radius_;
+        if (!(speed > 0)) return infinity;
+        return t + std::max(0.0, room) / speed;
+    }
+
+    Vector3 wrapped(const Vector3& position) const {
+        Vector3 f = apply_transpose(inverse_, position);
+        for (double& x : f) x -= std::floor(x);
+        return row_combination(cell_, f);
+    }
+
+    double region_radius(double t) const { return scale(t) * radius_ * (1 + options_.skin); }
+
+    // Every particle synchronised at t, wrapped into the cell and given a region about itself.
+    void build_regions(double t) {
+        std::vector<Vector3> centres;
+        for (int j = 0; j < n_; ++j) {
+            synchronise(j, t);
+            particles_[j].position = wrapped(particles_[j].position);
+            centres.push_back(particles_[j].position);
+        }
+        regions_.build(cell_, centres, region_radius(t));
+    }
+
+    // Particle i at the edge of its region at t gets a new region about it. Its position is
+    // wrapped back into the cell only once it has strayed a cell away: a wrap changes the image
+    // offsets that the others' events with i hold, so its counter must move on, which makes
+    // those events stale (a region move alone leaves every event valid).
+    void move_region(int i, double t) {
+        synchronise(i, t);
+        Particle& particle = particles_[i];
+        const Vector3 f = apply_transpose(inverse_, particle.position);
+        if (!(f[0] >= -1 && f[0] < 2 && f[1] >= -1 && f[1] < 2 && f[2] >= -1 && f[2] < 2)) {
+            particle.position = wrapped(particle.position);
+            ++particle.counter;
+        }
+        regions_.move(i, particle.position, region_radius(t));
     }
 
     // The deforming cell's trials at time t (every particle synchronised there): b -> b (I + e)
@@ -410,6 +531,9 @@ private:
         }
         for (Particle* particle : {&first, &second}) {
             ++particle->counter;
+            // The fast loop wraps a particle only when it moves its region (its neighbours'
+            // image offsets follow the particle as it is).
+            if (fast_) continue;
             Vector3 f = apply_transpose(inverse_, particle->position);
             for (double& x : f) x -= std::floor(x);
             particle->position = row_combination(cell_, f);
@@ -422,6 +546,7 @@ private:
     const SuperballShape& shape_;
     EventMdOptions options_;
     int n_ = 0;
+    bool fast_ = true;  // the neighbour-list loop, else the reference
     bool ball_ = false;
     double radius_ = 1, k_ = 0.4, G_ = 0, a0_ = 1, horizon_ = 1, image_scale_ = infinity, degrees_ = 1;
     double image_time_ = infinity, stop_time_ = infinity;  // set_stop_time
@@ -431,6 +556,8 @@ private:
     std::vector<Particle> particles_;
     std::vector<Event> events_;
     EventTree tree_;
+    NeighbourRegions regions_;
+    std::vector<std::pair<double, int>> order_;  // predict_neighbours' order of the neighbours (kept to reuse its memory)
     long predictions_ = 0, capped_ = 0, iterations_ = 0;
     RandomSource cell_random_{0};
     double strain_ = 0.01;

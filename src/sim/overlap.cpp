@@ -128,11 +128,21 @@ Nearest nearest_to_origin(const Simplex& s) {
     }
 }
 
+bool warm(const SeparationHint& hint) { return dot(hint.direction, hint.direction) > 0; }
+
+// Where GJK's search starts: a's centre minus b's, a point of D, or with a hint -|delta| times
+// its direction, which is no point of D: |v| is then no upper bound on the distance, and the
+// first step may not conclude convergence from it.
+Vector3 first_search_vector(const Vector3& delta, const SeparationHint& hint) {
+    return warm(hint) ? (-norm(delta)) * hint.direction : -delta;
+}
+
 }  // namespace
 
 namespace detail {
 
-Separation gjk(const SuperballShape& shape, const Placement& a, const Placement& b, bool stop_at_first_plane, GjkTrace* trace) {
+Separation gjk(const SuperballShape& shape, const Placement& a, const Placement& b, bool stop_at_first_plane, GjkTrace* trace,
+               const SeparationHint& hint) {
     const double size = shape.circumradius();
     const double tolerance = contact_tolerance * size;
     // Coordinates relative to a's center, so that only the bodies' difference enters the
@@ -152,7 +162,7 @@ Separation gjk(const SuperballShape& shape, const Placement& a, const Placement&
         return support_point(shape, body_a, direction) - support_point(shape, body_b, -direction);
     };
 
-    Vector3 v = -delta;  // a point of D: a's center minus b's center
+    Vector3 v = first_search_vector(delta, hint);
     Simplex simplex;
     double best_gap = -std::numeric_limits<double>::infinity();
     Vector3 best_normal = unit_or_first_axis(delta);
@@ -168,7 +178,8 @@ Separation gjk(const SuperballShape& shape, const Placement& a, const Placement&
             best_normal = (-1 / length) * v;
         }
         if (stop_at_first_plane && gap > tolerance) break;
-        if (length - gap <= std::max(absolute_gap * size, relative_gap * length)) {
+        const double accuracy = std::max(relative_gap, hint.relative_accuracy);
+        if (!(iteration == 1 && warm(hint)) && length - gap <= std::max(absolute_gap * size, accuracy * length)) {
             if (trace) trace->converged = true;
             break;
         }
@@ -199,6 +210,10 @@ bool overlapping(const SuperballShape& shape, const Placement& a, const Placemen
 
 Separation separation(const SuperballShape& shape, const Placement& a, const Placement& b) {
     return detail::gjk(shape, a, b, false, nullptr);
+}
+
+Separation separation(const SuperballShape& shape, const Placement& a, const Placement& b, const SeparationHint& hint) {
+    return detail::gjk(shape, a, b, false, nullptr, hint);
 }
 
 }  // namespace superpack::sim

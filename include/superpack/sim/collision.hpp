@@ -59,6 +59,9 @@ struct ContactPrediction {
     // bound on the contact time, if any).
     double time = 0;
     int iterations = 0;
+    // The normal of the last separating plane found (from a towards b; zero if none), for the
+    // caller's warm start of the same pair's next prediction.
+    Vector3 normal{0, 0, 0};
 };
 
 // The distance of the two bodies now, at scale `scale`: for p = 1 exactly |c_b - c_a| - 2a (0
@@ -66,6 +69,10 @@ struct ContactPrediction {
 // c / a + R K), 0 when it judges them touching. `normal` (if given) receives the unit separating
 // direction from a towards b.
 double distance(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double scale, Vector3* normal = nullptr);
+// The same with GJK's warm start and accuracy (sim/overlap.hpp): a lower bound on the distance
+// that may be up to hint.relative_accuracy below it.
+double distance(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double scale, Vector3* normal,
+                const SeparationHint& hint);
 
 // The time of first contact in [0, horizon] of bodies a and b moving from time 0 at scale
 // a(t) = a0 + G t (G >= 0), by conservative advancement (Mirtich 1996): at time t the bound d(t)
@@ -90,6 +97,14 @@ double distance(const SuperballShape& shape, const MovingBody& a, const MovingBo
 // tolerance) the gap of the last GJK plane is used: two support values instead of a GJK run.
 ContactPrediction first_contact(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double a0, double G,
                                 double horizon, const ContactOptions& options = {});
+// The same for md's fast loop, with the same guarantee: GJK starts from `hint.direction` (the
+// pair's last normal) and, while the distance bound is above `accurate_below` tolerances, stops
+// at `hint.relative_accuracy` (its gap is still a lower bound, so a step stays before the
+// contact, only shorter); below that, and for the contact decision, GJK runs to convergence as
+// in the reference. Fewer GJK steps per call; the reported contact time may differ from the
+// reference's within the tolerance, as the advancement's steps differ.
+ContactPrediction first_contact(const SuperballShape& shape, const MovingBody& a, const MovingBody& b, double a0, double G,
+                                double horizon, const ContactOptions& options, const SeparationHint& hint);
 
 // Bodies in contact now: the contact point (midway between the support points of the two bodies
 // along the normal), the unit normal from a towards b, and the distance bound.

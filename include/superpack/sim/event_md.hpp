@@ -27,14 +27,29 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <vector>
 
 #include "superpack/sim/collision.hpp"
 #include "superpack/sim/periodic_configuration.hpp"
 
 namespace superpack::sim {
 
+// How the loop finds a particle's next event. `neighbour_lists` (the default, NOTES 15.6):
+// predictions against the particles whose regions meet its own (sim/neighbour_regions.hpp),
+// GJK warm-started from each pair's last normal and loose far from contact, and a re-prediction
+// after a stale event that starts, for every partner unchanged since, where the last one ended.
+// `reference`: the loop as it was before (every particle's images screened by bounding spheres,
+// GJK from the centre line to full accuracy), kept so that bench/ and the tests can measure and
+// check the fast loop against it in the same run.
+enum class EventLoop { neighbour_lists, reference };
+
 struct EventMdOptions {
     std::uint64_t seed = 1;
+    EventLoop loop = EventLoop::neighbour_lists;
+    // Neighbour lists: a region's radius is the bounding sphere's a R_c plus this many a R_c.
+    double skin = 0.4;
+    // Record the first this many collisions in the result (for the tests' comparisons of loops).
+    long collision_log_limit = 0;
     // G = da/dt in the units of sim/collision.hpp (mass 1, kT = 1); 0: fixed size.
     double growth_rate = 0.01;
     // a0; 0: 0.99 times the largest scale at which nothing overlaps (`largest_free_scale`).
@@ -62,6 +77,11 @@ struct EventMdProgress {
     double time = 0, scale = 0, phi = 0, pressure = 0;
 };
 
+struct CollisionRecord {
+    int first = 0, second = 0;  // the particles, first < second
+    double time = 0;
+};
+
 struct EventMdResult {
     // The end state at unit scale: centres and cell divided by the final scale a, so that the
     // bodies are center(i) + R(q_i) K again (what periodic_packing proves); fractional
@@ -79,6 +99,7 @@ struct EventMdResult {
     long capped_predictions = 0;  // predictions stopped by the Zeno cap
     long advancement_steps = 0;   // distance evaluations (GJK runs unless p = 1) in all predictions
     long rescalings = 0;
+    long region_moves = 0;        // neighbour lists: particles that left their region and got a new one
     long cell_moves_kept = 0;     // deforming cell: strains kept (of cell_moves per window)
     // Why it stopped (exactly one is set): pressure or collision rate over its limit (jammed),
     // max_collisions, max_time, or the scale at which a body could meet its own image (half the
@@ -87,6 +108,7 @@ struct EventMdResult {
     // `stalled`: a whole window of collisions took no time (contacts that do not resolve).
     bool jammed_pressure = false, jammed_rate = false, collision_limit = false, time_limit = false, image_limit = false,
          stalled = false;
+    std::vector<CollisionRecord> collision_log;  // the first collision_log_limit collisions
 };
 
 // The largest a at which the bodies c_i + a R(q_i) K of `configuration` do not overlap (any two,

@@ -45,6 +45,20 @@ bool overlapping(const SuperballShape& shape, const Placement& a, const Placemen
 // distance is within rounding of the contact tolerance.
 Separation separation(const SuperballShape& shape, const Placement& a, const Placement& b);
 
+// What a caller that has tested the same pair before can tell GJK (md's fast loop, which asks
+// for the same pair's distance again and again as the bodies move a little):
+struct SeparationHint {
+    // A unit direction from a towards b (the normal of the last test), where GJK starts its
+    // search instead of the centre difference; zero: none. Near the answer, fewer steps.
+    Vector3 direction{0, 0, 0};
+    // Stop when the gap of the best plane is within this fraction of GJK's upper bound on the
+    // distance (at least the default 1e-10): the gap is then at least (1 - accuracy) times the
+    // distance, and it is a lower bound whatever the accuracy, which is all that conservative
+    // advancement needs far from contact.
+    double relative_accuracy = 0;
+};
+Separation separation(const SuperballShape& shape, const Placement& a, const Placement& b, const SeparationHint& hint);
+
 namespace detail {
 // How a GJK run ended, for the tests: `converged` when the distance bounds met, `stalled` when
 // rounding stopped the progress, `capped` at the iteration cap.
@@ -53,7 +67,8 @@ struct GjkTrace {
     bool converged = false, stalled = false, capped = false;
 };
 // Both tests above: stop_at_first_plane for `overlapping`.
-Separation gjk(const SuperballShape& shape, const Placement& a, const Placement& b, bool stop_at_first_plane, GjkTrace* trace);
+Separation gjk(const SuperballShape& shape, const Placement& a, const Placement& b, bool stop_at_first_plane, GjkTrace* trace,
+               const SeparationHint& hint = {});
 }  // namespace detail
 
 // A support point of a placed body: center + R s_K(R^T n).
