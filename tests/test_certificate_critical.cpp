@@ -2,13 +2,17 @@
 // 12.8): the boxes around C1's images at p = 2 and gap 0 certify, and the checker rejects, each at
 // a named tree, a changed leaf reason (a symmetric leaf among them), a removed leaf, a cut moved to
 // the other side, a split at another coordinate (and one without a coordinate, malformed), a
-// closing region leaf pointed at another image, a removed start box and a raised T.
+// closing region leaf pointed at another image, a removed start box and a raised T; and a start
+// box of a symmetric ('m') tree replaced by hand-made boxes on each side of each of the leaf's
+// conditions (NOTES.md 12.2's fundamental domain, 12.3's reason 7).
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "checker/verifier.hpp"
 #include "critical_certificates.hpp"
+#include "superpack/cert/certificate.hpp"
 #include "support.hpp"
 #include "tamper.hpp"
 
@@ -104,6 +108,19 @@ void check_leaf_change_rejected(const Document& original, char letter,
     tree.replace(leaf.offset, leaf.length, change(tree.substr(leaf.offset, leaf.length)));
     copy["proof"]["trees"][k] = tree;
     CHECK(rejected_at(copy).rfind(tree_path(k), 0) == 0);
+}
+
+// A start box {configuration, face2, face3, x}: x_k in centre_k +- 1/64, except a2 = x[2] in
+// [-1, -15/16] when `a2_at_minus_one` (every end a binary64 number, all in the chart's domain).
+Document chart_box_json(const char* configuration, int face2, int face3, const std::array<double, 6>& centre,
+                        bool a2_at_minus_one = false) {
+    Document x = Document::array();
+    for (int k = 0; k < 6; ++k) {
+        const bool edge = a2_at_minus_one && k == 2;
+        const superpack::DInterval xk(edge ? -1.0 : centre[k] - 1.0 / 64, edge ? -15.0 / 16 : centre[k] + 1.0 / 64);
+        x.push_back(Document::parse(superpack::exact_interval_json(xk).dump()));
+    }
+    return {{"configuration", configuration}, {"face2", face2}, {"face3", face3}, {"x", x}};
 }
 
 }  // namespace
@@ -258,5 +275,52 @@ TEST_CASE("critical-lattice short-vector cuts at p = 3/5: they verify; a changed
     }
     SECTION("a form 5 is malformed") {
         CHECK(verify_document(changed([&](std::string& t) { t[cut] = '5'; })).verdict == Verdict::malformed);
+    }
+}
+
+// The symmetric leaf 'm' (critical_tree.cpp's leaf_symmetric): a2 > a3 certainly where face2 =
+// face3, or (A3 only) F = b1 . (b2 + b3 - b1) certainly < 0. The start box of the first tree that
+// is one 'm' is replaced (the claim's sentence counts boxes and leaves only, so it stays), and the
+// box must be rejected at that tree unless it is outside the fundamental domain. F over each box,
+// at p = 2 (by sampling its corners in binary64): a, b, c, d about -8.7..-8.3, 3.0..3.4,
+// 4.6..4.8, 4.6..4.8; e about -0.16..0.26. Each section fails under one mutation of the guards:
+//   a: `if (start_.configuration == Configuration::a3)` -> `if (true)` (F < 0 used for W);
+//   b: `start_.face2 == start_.face3 &&` dropped (a2 > a3 used across different faces);
+//   c and d: `less(x[4], x[2])` -> `less(x[2], x[4])` (the face condition reversed);
+//   e: `less(sum, 0)` -> `!less(0, sum)` (F <= 0 possible taken for F < 0).
+TEST_CASE("critical-lattice symmetric leaf: a start box on each side of its conditions, accepted or rejected") {
+    const Document& original = certificate_around_c1();
+    const Document& trees = original["proof"]["trees"];
+    std::size_t k = 0;
+    while (k < trees.size() && trees[k] != "m") ++k;
+    REQUIRE(k < trees.size());
+    auto with_box = [&](const Document& box) {
+        Document copy = original;
+        copy["proof"]["boxes"][k] = box;
+        return copy;
+    };
+    // s = t = 1/2 (b1 along (1, 1/2, 1/4)), v2 and v3 near (1, 1/2, 1/4) or (1, 1/4, 1/4) on +x.
+    const std::array<double, 6> a2_above{0.5, 0.5, 0.5, 0.25, 0.25, 0.25}, a2_below{0.5, 0.5, 0.25, 0.25, 0.5, 0.25};
+
+    SECTION("W, F < 0 on different faces: F is no reason for W (it has only the swap)") {
+        CHECK(rejected_at(with_box(chart_box_json("W", 1, 3, a2_above))).rfind(tree_path(k), 0) == 0);
+        // The same box as A3 is symmetric by F < 0.
+        CHECK(verify_document(with_box(chart_box_json("A3", 1, 3, a2_above))).verdict == Verdict::valid);
+    }
+    SECTION("A3, a2 > a3 but on different faces (+x, +y), F > 0") {
+        CHECK(rejected_at(with_box(chart_box_json("A3", 0, 2, a2_above))).rfind(tree_path(k), 0) == 0);
+    }
+    SECTION("A3, one face (+x), a2 < a3, F > 0: inside the fundamental domain") {
+        CHECK(rejected_at(with_box(chart_box_json("A3", 0, 0, a2_below))).rfind(tree_path(k), 0) == 0);
+    }
+    SECTION("one face (+x), a2 > a3, F > 0: symmetric, for A3 and W") {
+        for (const char* configuration : {"A3", "W"}) {
+            const auto report = verify_document(with_box(chart_box_json(configuration, 0, 0, a2_above)));
+            INFO(configuration << " " << report.path << ": " << report.message);
+            CHECK(report.verdict == Verdict::valid);
+        }
+    }
+    SECTION("A3, F of both signs on the box (a2 in [-1, -15/16] on +x, v3 on +y), no face condition") {
+        CHECK(rejected_at(with_box(chart_box_json("A3", 0, 2, a2_above, true))).rfind(tree_path(k), 0) == 0);
     }
 }
