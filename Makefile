@@ -55,7 +55,7 @@ proofs: build
 # The whole-domain theorem of `critical` at CRITICAL_P (an exact decimal, default 2) and
 # CRITICAL_GAP (default 0) as a verified certificate (NOTES.md 12.9): CRITICAL_SHARDS shard
 # certificates at --split CRITICAL_SPLIT and their cover, in out/critical-p<P>/, then the cover
-# replayed once more by `superpack verify`. p = 2 (142 MB, too large for proofs/): about 25 minutes
+# replayed once more by `superpack verify`. p = 2 (38 MB, too large for proofs/): about 7 minutes
 # on 2 cores. p = 3/5: CRITICAL_P=0.6 CRITICAL_GAP=9e-5 CRITICAL_SPLIT=6 CRITICAL_SHARDS=672. A
 # stopped run resumes.
 CRITICAL_P ?= 2
